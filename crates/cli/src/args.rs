@@ -1,0 +1,110 @@
+//! The command line.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand};
+use dissect_core::LatticeKind;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "dissect",
+    version,
+    about = "Find the fewest connected pieces that cut one lattice figure into another."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Find a dissection of two or more figures of equal area.
+    Solve(SolveArgs),
+    /// Check a solution file against its figures.
+    Verify(VerifyArgs),
+    /// Print each figure's cell count, components, holes and bounding box.
+    Info(InfoArgs),
+}
+
+fn lattice(s: &str) -> Result<LatticeKind, String> {
+    s.parse()
+        .map_err(|e: dissect_core::lattice::UnknownLattice| e.to_string())
+}
+
+#[derive(Args, Debug)]
+pub struct SolveArgs {
+    /// The lattice: square, tri4 or cubic.
+    #[arg(long, default_value = "square", value_parser = lattice)]
+    pub lattice: LatticeKind,
+    /// Do not turn 2D pieces over (rotations only).
+    #[arg(long)]
+    pub no_mirror: bool,
+    /// Seed of every random choice; the same seed gives the same result for any --threads.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Worker threads (default: one per core).
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// Stop after this many seconds and report the best dissection found so far.
+    #[arg(long, value_name = "SECS")]
+    pub time_limit: Option<f64>,
+    /// Give up after trying this many pieces.
+    #[arg(long, value_name = "K")]
+    pub max_pieces: Option<usize>,
+    /// Weight of the area-balance term at level 1 (paper: 0.5; 0 turns it off).
+    #[arg(long, default_value_t = 0.5, value_name = "X")]
+    pub area_weight: f64,
+    /// Random explorations per level (paper: N = 400).
+    #[arg(long, default_value_t = 400, value_name = "N")]
+    pub explorations: usize,
+    /// Best candidates kept per level (paper: Nb = 30).
+    #[arg(long, default_value_t = 30, value_name = "NB")]
+    pub keep: usize,
+    /// Refinement iterations per exploration (paper: R = 100).
+    #[arg(long, default_value_t = 100, value_name = "R")]
+    pub iterations: usize,
+    /// Objective penalty per disconnected piece during the search.
+    #[arg(long, default_value_t = 1000.0, value_name = "X")]
+    pub split_penalty: f64,
+    /// Level-1 runs tried when splitting the worst pair of pieces.
+    #[arg(long, default_value_t = 4, value_name = "N")]
+    pub split_tries: usize,
+    /// Run the whole final level to pick the least area variance among more solutions.
+    #[arg(long)]
+    pub full_level: bool,
+    /// Write the solution JSON here.
+    #[arg(short = 'o', long = "output", value_name = "OUT.json")]
+    pub output: Option<PathBuf>,
+    /// Print nothing but errors.
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// Colour the pieces: auto (when stdout is a terminal), always, never.
+    #[arg(long, default_value = "auto", value_parser = ["auto", "always", "never"])]
+    pub color: String,
+    /// The figures (text files, see FORMAT.md).
+    #[arg(required = true, num_args = 2.., value_name = "FIGURE")]
+    pub figures: Vec<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct VerifyArgs {
+    /// The lattice (default: the solution's).
+    #[arg(long, value_parser = lattice)]
+    pub lattice: Option<LatticeKind>,
+    /// The solution JSON.
+    #[arg(long, value_name = "S.json")]
+    pub solution: PathBuf,
+    /// The figures, in the solution's order.
+    #[arg(required = true, num_args = 1.., value_name = "FIGURE")]
+    pub figures: Vec<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct InfoArgs {
+    /// The lattice: square, tri4 or cubic.
+    #[arg(long, default_value = "square", value_parser = lattice)]
+    pub lattice: LatticeKind,
+    /// The figures.
+    #[arg(required = true, num_args = 1.., value_name = "FIGURE")]
+    pub figures: Vec<PathBuf>,
+}

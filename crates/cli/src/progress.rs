@@ -1,0 +1,111 @@
+//! Progress on stderr: an indicatif bar on a terminal, one plain line per
+//! level otherwise, nothing with --quiet.
+
+use std::io::IsTerminal;
+use std::sync::Mutex;
+use std::time::Instant;
+
+use dissect_core::solver::{Event, Observer};
+use indicatif::{ProgressBar, ProgressStyle};
+
+pub enum Progress {
+    Quiet,
+    Lines {
+        start: Instant,
+    },
+    Bar {
+        start: Instant,
+        bar: Mutex<Option<ProgressBar>>,
+    },
+}
+
+impl Progress {
+    pub fn new(quiet: bool) -> Progress {
+        let start = Instant::now();
+        if quiet {
+            Progress::Quiet
+        } else if std::io::stderr().is_terminal() {
+            Progress::Bar {
+                start,
+                bar: Mutex::new(None),
+            }
+        } else {
+            Progress::Lines { start }
+        }
+    }
+
+    pub fn finish(&self) {
+        if let Progress::Bar { bar, .. } = self {
+            if let Some(b) = bar.lock().expect("bar lock").take() {
+                b.finish_and_clear();
+            }
+        }
+    }
+}
+
+impl Observer for Progress {
+    fn on_event(&self, event: &Event) {
+        match (self, event) {
+            (Progress::Quiet, _) => {}
+            (
+                Progress::Bar { bar, .. },
+                Event::LevelStarted {
+                    level,
+                    pieces,
+                    explorations,
+                },
+            ) if *level > 0 => {
+                let b = ProgressBar::new(*explorations as u64);
+                b.set_style(
+                    ProgressStyle::with_template(
+                        "{prefix} [{bar:30}] {pos}/{len} explorations {msg} ({elapsed})",
+                    )
+                    .expect("valid template")
+                    .progress_chars("=> "),
+                );
+                b.set_prefix(format!("level {level} ({pieces} pieces)"));
+                if let Some(old) = bar.lock().expect("bar lock").replace(b) {
+                    old.finish_and_clear();
+                }
+            }
+            (
+                Progress::Bar { bar, .. },
+                Event::Exploration {
+                    done,
+                    best_score,
+                    best_mismatch,
+                    ..
+                },
+            ) => {
+                if let Some(b) = bar.lock().expect("bar lock").as_ref() {
+                    b.set_position(*done as u64);
+                    b.set_message(format!("best E_M {best_mismatch}, E {best_score:.2}"));
+                }
+            }
+            (Progress::Bar { bar, start }, e @ Event::LevelFinished { .. }) => {
+                let line = level_line(e, start);
+                if let Some(b) = bar.lock().expect("bar lock").take() {
+                    b.finish_and_clear();
+                }
+                eprintln!("{line}");
+            }
+            (Progress::Lines { start }, e @ Event::LevelFinished { .. }) => {
+                eprintln!("{}", level_line(e, start))
+            }
+            _ => {}
+        }
+    }
+}
+
+fn level_line(e: &Event, start: &Instant) -> String {
+    match e {
+        Event::LevelFinished { level, pieces, explorations, best_mismatch, found } => format!(
+            "level {level} ({pieces} piece{}): {explorations} exploration{}, best E_M {best_mismatch}{}, {:.1} s",
+            if *pieces == 1 { "" } else { "s" },
+            if *explorations == 1 { "" } else { "s" },
+            if *found { ", dissection found" } else { "" },
+            start.elapsed().as_secs_f64()
+        ),
+        _ => String::new(),
+    }
+}

@@ -1,0 +1,171 @@
+//! `dissect solve`.
+
+use std::io::IsTerminal;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Condvar, Mutex};
+use std::time::{Duration, Instant};
+
+use anyhow::{Context, Result};
+use dissect_core::io::Dissection;
+use dissect_core::solver::{solve, Options};
+use serde_json::{json, Map, Value};
+
+use crate::args::SolveArgs;
+use crate::progress::Progress;
+use crate::{input, InputError, Status};
+
+/// Raised by the time limit and by Ctrl-C.
+static STOP: AtomicBool = AtomicBool::new(false);
+
+pub fn run(args: SolveArgs) -> Result<Status> {
+    let figures = input::figures(&args.figures, args.lattice)?;
+    input::check_equal_areas(&args.figures, &figures)?;
+    if let Some(t) = args.time_limit {
+        if !(t.is_finite() && t >= 0.0) {
+            return Err(InputError(format!(
+                "--time-limit must be a number of seconds >= 0, got {t}"
+            ))
+            .into());
+        }
+    }
+    if !(args.area_weight.is_finite() && args.area_weight >= 0.0) {
+        return Err(InputError(format!(
+            "--area-weight must be >= 0, got {}",
+            args.area_weight
+        ))
+        .into());
+    }
+    let lattice = args.lattice.lattice();
+    let mirror = !args.no_mirror && lattice.supports_mirror();
+    let options = Options {
+        mirror,
+        seed: args.seed,
+        threads: args.threads,
+        max_pieces: args.max_pieces,
+        area_weight: args.area_weight,
+        explorations: args.explorations,
+        keep: args.keep,
+        iterations: args.iterations,
+        split_penalty: args.split_penalty,
+        split_tries: args.split_tries,
+        full_levels: args.full_level,
+        ..Options::default()
+    };
+
+    // Ctrl-C: the first stops the search (the best result is kept), a
+    // second one exits at once.
+    let _ = ctrlc::set_handler(|| {
+        if STOP.swap(true, Ordering::SeqCst) {
+            std::process::exit(130);
+        }
+    });
+    let start = Instant::now();
+    let finished = Arc::new((Mutex::new(false), Condvar::new()));
+    let timer = args.time_limit.map(|secs| {
+        let finished = Arc::clone(&finished);
+        std::thread::spawn(move || {
+            let (lock, cv) = &*finished;
+            let deadline = Instant::now() + Duration::from_secs_f64(secs);
+            let mut done = lock.lock().expect("timer lock");
+            while !*done {
+                let now = Instant::now();
+                if now >= deadline {
+                    STOP.store(true, Ordering::SeqCst);
+                    return;
+                }
+                done = cv.wait_timeout(done, deadline - now).expect("timer lock").0;
+            }
+        })
+    });
+
+    let progress = Progress::new(args.quiet);
+    let outcome = solve(&figures, &options, &STOP, &progress);
+    progress.finish();
+    {
+        let (lock, cv) = &*finished;
+        *lock.lock().expect("timer lock") = true;
+        cv.notify_all();
+    }
+    if let Some(t) = timer {
+        let _ = t.join();
+    }
+    let outcome = outcome.map_err(|e| InputError(e.to_string()))?;
+    let elapsed = start.elapsed().as_secs_f64();
+
+    let Some(found) = outcome.found else {
+        let why = if outcome.stopped {
+            "the search was stopped (time limit or Ctrl-C)"
+        } else {
+            "--max-pieces was reached"
+        };
+        eprintln!(
+            "no dissection found: {why} after {:.1} s; the best candidate with {} pieces had matching score E_M = {}",
+            elapsed,
+            outcome.last_pieces,
+            outcome.best_mismatch.map_or("n/a".to_string(), |m| m.to_string()),
+        );
+        return Ok(Status::NotFound);
+    };
+
+    let dissection = Dissection {
+        lattice: args.lattice,
+        mirror,
+        names: args.figures.iter().map(|p| input::file_name(p)).collect(),
+        pieces: found.pieces.clone(),
+    };
+    // Never hand out an answer that the independent verifier rejects.
+    if let Err(v) = dissect_core::verify::verify(&dissection, &figures) {
+        anyhow::bail!(
+            "internal error: the solver's dissection failed verification: {}",
+            v[0]
+        );
+    }
+
+    if !args.quiet {
+        let colour = match args.color.as_str() {
+            "always" => true,
+            "never" => false,
+            _ => std::io::stdout().is_terminal(),
+        };
+        for (path, pieces) in args.figures.iter().zip(&found.pieces) {
+            println!("{}:", path.display());
+            print!(
+                "{}",
+                dissect_core::ascii::draw(args.lattice, pieces, colour)
+            );
+            println!();
+        }
+        let areas = found.areas();
+        let list: Vec<String> = areas
+            .iter()
+            .enumerate()
+            .map(|(i, a)| format!("{}={a}", dissect_core::ascii::piece_letter(i)))
+            .collect();
+        println!("{} pieces", found.piece_count());
+        println!("piece areas: {}", list.join(" "));
+        println!("area variance: {:.2}", found.variance);
+        println!(
+            "time: {elapsed:.2} s{}",
+            if outcome.stopped {
+                " (stopped early; best found so far)"
+            } else {
+                ""
+            }
+        );
+    }
+
+    if let Some(out) = &args.output {
+        let mut extra = Map::new();
+        extra.insert("pieces".into(), json!(found.piece_count()));
+        extra.insert("areas".into(), json!(found.areas()));
+        extra.insert("area_variance".into(), json!(found.variance));
+        extra.insert("seed".into(), json!(args.seed));
+        extra.insert("seconds".into(), json!((elapsed * 1000.0).round() / 1000.0));
+        extra.insert("level".into(), json!(found.level));
+        extra.insert("explorations".into(), json!(outcome.explorations));
+        extra.insert("stopped_early".into(), Value::Bool(outcome.stopped));
+        let text = dissection.to_file(extra).to_json();
+        std::fs::write(out, text).with_context(|| format!("cannot write {}", out.display()))?;
+    }
+    Ok(Status::Ok)
+}

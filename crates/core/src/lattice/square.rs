@@ -1,0 +1,49 @@
+//! The square lattice: unit squares `[x, y, 0]`, 4 edge-neighbours.
+
+use super::{planar_symmetries, Cell, Lattice, LatticeKind, Point, Symmetry};
+
+/// The square lattice.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Square;
+
+impl Lattice for Square {
+    fn kind(&self) -> LatticeKind {
+        LatticeKind::Square
+    }
+    fn dim(&self) -> usize {
+        2
+    }
+    fn modulus(&self) -> i32 {
+        1
+    }
+    fn is_cell(&self, cell: Cell) -> bool {
+        cell[2] == 0
+    }
+    fn to_point(&self, cell: Cell) -> Point {
+        cell
+    }
+    fn from_point(&self, p: Point) -> Option<Cell> {
+        (p[2] == 0).then_some(p)
+    }
+    fn neighbors(&self, [x, y, _]: Cell) -> Vec<Cell> {
+        vec![[x + 1, y, 0], [x - 1, y, 0], [x, y + 1, 0], [x, y - 1, 0]]
+    }
+    fn supports_mirror(&self) -> bool {
+        true
+    }
+    fn symmetries(&self, mirror: bool) -> Vec<Symmetry> {
+        planar_symmetries(mirror)
+    }
+    fn cells_in_box(&self, lo: [i32; 3], hi: [i32; 3]) -> Vec<Cell> {
+        let mut out = Vec::new();
+        for y in lo[1]..=hi[1] {
+            for x in lo[0]..=hi[0] {
+                out.push([x, y, 0]);
+            }
+        }
+        out
+    }
+    fn block(&self, cell: Cell) -> [i32; 3] {
+        [cell[0], cell[1], 0]
+    }
+}

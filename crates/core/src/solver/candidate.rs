@@ -1,0 +1,137 @@
+//! Candidates (one labelling of every figure) and their objective.
+
+use crate::distance::{Geometry, Side};
+use crate::matching::{match_pieces, PairMatching};
+use crate::piece::Pieces;
+use crate::solver::shape::Shape;
+
+/// The figures of one solve, in solver form.
+#[derive(Clone, Debug)]
+pub(crate) struct Problem {
+    pub(crate) shapes: Vec<Shape>,
+    pub(crate) geo: Geometry,
+}
+
+/// One labelling of every figure with piece ids `0..k`.
+///
+/// # Validity
+/// `labels[f].len() == shapes[f].len()` and every label is `< k`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Candidate {
+    pub(crate) labels: Vec<Vec<u16>>,
+    pub(crate) k: usize,
+}
+
+/// The objective of a candidate and what it is made of.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Score {
+    /// `E = E_M + λ·ΣEα + penalty·split`.
+    pub(crate) value: f64,
+    /// `E_M`: total matching cost against figure 0.
+    pub(crate) mismatch: u64,
+    /// Number of (figure, piece) pairs that are not connected.
+    pub(crate) split: u32,
+    /// `E_M = 0` and every piece connected.
+    pub(crate) valid: bool,
+    /// Variance of the non-empty piece areas.
+    pub(crate) variance: f64,
+}
+
+/// The pieces of every figure, with labels aligned to a pivot figure.
+pub(crate) struct Aligned {
+    pub(crate) pieces: Vec<Pieces>,
+    /// `matchings[f]` carries the pivot's pieces onto figure `f`'s pieces of
+    /// the same label (`None` for the pivot itself).
+    pub(crate) matchings: Vec<Option<PairMatching>>,
+}
+
+impl Candidate {
+    /// The pieces of figure `f`.
+    pub(crate) fn pieces(&self, problem: &Problem, f: usize) -> Pieces {
+        Pieces::of(&problem.shapes[f], &self.labels[f], self.k)
+    }
+
+    /// Computes the matching from `pivot` to every other figure and relabels
+    /// the other figures so that matched pieces carry the pivot's labels.
+    pub(crate) fn align(&mut self, problem: &Problem, pivot: usize) -> Aligned {
+        let pp = self.pieces(problem, pivot);
+        let mut pieces = Vec::with_capacity(problem.shapes.len());
+        let mut matchings = Vec::with_capacity(problem.shapes.len());
+        for f in 0..problem.shapes.len() {
+            if f == pivot {
+                pieces.push(pp.clone());
+                matchings.push(None);
+                continue;
+            }
+            let pf = self.pieces(problem, f);
+            let m = match_pieces(
+                &problem.geo,
+                Side {
+                    shape: &problem.shapes[pivot],
+                    labels: &self.labels[pivot],
+                    pieces: &pp,
+                },
+                Side {
+                    shape: &problem.shapes[f],
+                    labels: &self.labels[f],
+                    pieces: &pf,
+                },
+            );
+            let mut relabel = vec![0u16; self.k];
+            for (a, &b) in m.partner.iter().enumerate() {
+                relabel[b] = a as u16;
+            }
+            for l in self.labels[f].iter_mut() {
+                *l = relabel[*l as usize];
+            }
+            pieces.push(pf.permuted(&m.partner));
+            matchings.push(Some(m));
+        }
+        Aligned { pieces, matchings }
+    }
+
+    /// Aligns every figure to figure 0 and scores the candidate.
+    pub(crate) fn evaluate(&mut self, problem: &Problem, lambda: f64, split_penalty: f64) -> Score {
+        let aligned = self.align(problem, 0);
+        let mismatch: u64 = aligned.matchings.iter().flatten().map(|m| m.cost).sum();
+        let mut area = 0.0;
+        let mut split = 0u32;
+        for (f, pieces) in aligned.pieces.iter().enumerate() {
+            let shape = &problem.shapes[f];
+            let mean = shape.len() as f64 / self.k as f64;
+            let mut scratch = vec![false; shape.len()];
+            for i in 0..self.k {
+                let s = pieces.size(i) as f64;
+                area += area_penalty(s, mean);
+                if s > 0.0 && pieces.components(shape, i, &mut scratch) > 1 {
+                    split += 1;
+                }
+            }
+        }
+        let sizes: Vec<f64> = (0..self.k)
+            .map(|i| aligned.pieces[0].size(i) as f64)
+            .filter(|s| *s > 0.0)
+            .collect();
+        let mean = sizes.iter().sum::<f64>() / sizes.len().max(1) as f64;
+        let variance =
+            sizes.iter().map(|s| (s - mean) * (s - mean)).sum::<f64>() / sizes.len().max(1) as f64;
+        Score {
+            value: mismatch as f64 + lambda * area + split_penalty * split as f64,
+            mismatch,
+            split,
+            valid: mismatch == 0 && split == 0,
+            variance,
+        }
+    }
+}
+
+/// The paper's area term `α` for a piece of area `s` when the mean is `mean`.
+pub(crate) fn area_penalty(s: f64, mean: f64) -> f64 {
+    if s > 2.0 * mean {
+        s / mean - 1.0
+    } else if s < mean / 2.0 {
+        mean / s.max(0.5) - 1.0
+    } else {
+        0.0
+    }
+}

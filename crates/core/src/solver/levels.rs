@@ -1,0 +1,164 @@
+//! Explorations (paper section 3.2): level 1 grows two random clusters per
+//! figure; level ℓ adds one piece to a candidate of the previous level, by
+//! splitting the worst-matched piece (75%) or by a new piece made of
+//! mismatched cells (25%), and refines all pieces together.
+
+use std::collections::VecDeque;
+use std::sync::atomic::AtomicBool;
+
+use rand::RngExt;
+
+use crate::piece::UNSET;
+use crate::solver::candidate::{Candidate, Problem, Score};
+use crate::solver::flood_fill::{flood_fill, Fallback};
+use crate::solver::refine::{mismatched_cells, refine};
+use crate::solver::Options;
+
+/// `λ` at a level: `area_weight · 0.8^(ℓ−1)`.
+pub(crate) fn lambda(options: &Options, level: usize) -> f64 {
+    options.area_weight * 0.8f64.powi(level as i32 - 1)
+}
+
+/// One level-1 exploration: two random flood-fill clusters in every figure,
+/// refined and scored.
+pub(crate) fn level_one<R: rand::Rng>(
+    problem: &Problem,
+    options: &Options,
+    rng: &mut R,
+    stop: &AtomicBool,
+) -> (Candidate, Score) {
+    let mut labels = Vec::with_capacity(problem.shapes.len());
+    for shape in &problem.shapes {
+        let n = shape.len();
+        let mut l = vec![UNSET; n];
+        if n >= 2 {
+            let a = rng.random_range(0..n);
+            let mut b = rng.random_range(0..n - 1);
+            if b >= a {
+                b += 1;
+            }
+            l[a] = 0;
+            l[b] = 1;
+        } else {
+            l[0] = 0;
+        }
+        flood_fill(shape, &mut l, Fallback::Random(2), rng);
+        labels.push(l);
+    }
+    let mut cand = Candidate { labels, k: 2 };
+    refine(problem, &mut cand, options.iterations, rng, stop);
+    let score = cand.evaluate(problem, lambda(options, 1), options.split_penalty);
+    (cand, score)
+}
+
+/// One level-ℓ exploration: `parent` (with ℓ pieces) gets one more piece,
+/// then all pieces are refined together and scored at `level`.
+pub(crate) fn grow<R: rand::Rng>(
+    problem: &Problem,
+    parent: &Candidate,
+    level: usize,
+    options: &Options,
+    rng: &mut R,
+    stop: &AtomicBool,
+) -> (Candidate, Score) {
+    let mut cand = parent.clone();
+    let split = rng.random_bool(0.75) && split_worst(problem, &mut cand, options, rng, stop);
+    if !split {
+        piece_from_mismatches(problem, &mut cand, rng);
+    }
+    refine(problem, &mut cand, options.iterations, rng, stop);
+    let score = cand.evaluate(problem, lambda(options, level), options.split_penalty);
+    (cand, score)
+}
+
+/// Splits the piece with the worst total distance to its matches (seen from
+/// a random pivot), with all its matched pieces, into two by running level 1
+/// on those pieces as if they were the input figures. Returns false when no
+/// piece can be split (a piece of one cell somewhere).
+fn split_worst<R: rand::Rng>(
+    problem: &Problem,
+    cand: &mut Candidate,
+    options: &Options,
+    rng: &mut R,
+    stop: &AtomicBool,
+) -> bool {
+    let nfig = problem.shapes.len();
+    let pivot = rng.random_range(0..nfig);
+    let aligned = cand.align(problem, pivot);
+    let worst = (0..cand.k)
+        .filter(|&a| aligned.pieces.iter().all(|p| p.size(a) >= 2))
+        .max_by_key(|&a| {
+            let d: u64 = aligned
+                .matchings
+                .iter()
+                .flatten()
+                .map(|m| m.dists[a] as u64)
+                .sum();
+            (d, std::cmp::Reverse(a))
+        });
+    let Some(a) = worst else { return false };
+    let members: Vec<Vec<u32>> = aligned
+        .pieces
+        .iter()
+        .map(|p| p.members(a).to_vec())
+        .collect();
+    let sub = Problem {
+        shapes: problem
+            .shapes
+            .iter()
+            .zip(&members)
+            .map(|(s, m)| s.subset(m))
+            .collect(),
+        geo: problem.geo.clone(),
+    };
+    let mut best: Option<(Candidate, Score)> = None;
+    for _ in 0..options.split_tries.max(1) {
+        let (c, s) = level_one(&sub, options, rng, stop);
+        if best.as_ref().is_none_or(|(_, b)| s.value < b.value) {
+            best = Some((c, s));
+        }
+    }
+    let (split, _) = best.expect("at least one try");
+    let new_label = cand.k as u16;
+    for (f, m) in members.iter().enumerate() {
+        for (i, &c) in m.iter().enumerate() {
+            if split.labels[f][i] == 1 {
+                cand.labels[f][c as usize] = new_label;
+            }
+        }
+    }
+    cand.k += 1;
+    true
+}
+
+/// A new piece grown, in every figure, from a random mismatched cell by
+/// flood fill through mismatched cells.
+fn piece_from_mismatches<R: rand::Rng>(problem: &Problem, cand: &mut Candidate, rng: &mut R) {
+    let marked = mismatched_cells(problem, cand);
+    let new_label = cand.k as u16;
+    for (f, cells) in marked.iter().enumerate() {
+        let shape = &problem.shapes[f];
+        if cells.is_empty() {
+            let c = rng.random_range(0..shape.len());
+            cand.labels[f][c] = new_label;
+            continue;
+        }
+        let mut is_marked = vec![false; shape.len()];
+        for &c in cells {
+            is_marked[c as usize] = true;
+        }
+        let seed = cells[rng.random_range(0..cells.len())];
+        let mut queue = VecDeque::from([seed]);
+        is_marked[seed as usize] = false;
+        while let Some(c) = queue.pop_front() {
+            cand.labels[f][c as usize] = new_label;
+            for &n in shape.neighbors(c) {
+                if is_marked[n as usize] {
+                    is_marked[n as usize] = false;
+                    queue.push_back(n);
+                }
+            }
+        }
+    }
+    cand.k += 1;
+}
