@@ -7,10 +7,10 @@
 //! are combined in index order, so the result does not depend on the number
 //! of threads (unless the run is stopped early).
 
-mod candidate;
-mod flood_fill;
-mod levels;
-mod refine;
+pub(crate) mod candidate;
+pub(crate) mod flood_fill;
+pub(crate) mod levels;
+pub(crate) mod refine;
 pub(crate) mod shape;
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};

@@ -19,7 +19,7 @@ use crate::transform::Transform;
 
 /// The transforms that carry each figure's piece `a` onto the pivot's piece
 /// `a` and on to every other figure.
-struct Motions {
+pub(crate) struct Motions {
     pivot: usize,
     /// `to[f][a]`: pivot piece `a` → figure `f` (identity for the pivot).
     to: Vec<Vec<Transform>>,
@@ -28,7 +28,7 @@ struct Motions {
 }
 
 impl Motions {
-    fn of(aligned: &Aligned, pivot: usize, k: usize) -> Motions {
+    pub(crate) fn of(aligned: &Aligned, pivot: usize, k: usize) -> Motions {
         let to: Vec<Vec<Transform>> = aligned
             .matchings
             .iter()
@@ -48,7 +48,7 @@ impl Motions {
 /// The cells of figure `f` whose image conflicts: lands outside another
 /// figure or on a cell of another piece there. With `all_figures` false only
 /// the pivot is compared against.
-fn conflicts(
+pub(crate) fn conflicts(
     problem: &Problem,
     cand: &Candidate,
     motions: &Motions,
@@ -92,7 +92,7 @@ fn conflicts(
 
 /// One refinement step with `pivot`; returns the number of conflicting
 /// cells found by label switching (0 means every figure matches the pivot).
-fn pivot_step<R: rand::Rng>(
+pub(crate) fn pivot_step<R: rand::Rng>(
     problem: &Problem,
     cand: &mut Candidate,
     pivot: usize,
