@@ -1,0 +1,327 @@
+//! Summaries over seeds and the tables printed from them, as aligned text
+//! or as Markdown.
+//!
+//! Medians over an even number of seeds take the upper middle value (the
+//! worse of the two), and a run that found nothing counts as worse than any
+//! run that found something.
+
+use std::time::Duration;
+
+use dissect_core::LatticeKind;
+
+use crate::paper::PaperResult;
+use crate::run::SeedRun;
+
+/// All seeds of one instance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InstanceResult {
+    /// The instance's name.
+    pub name: String,
+    /// Its lattice.
+    pub lattice: LatticeKind,
+    /// Cells per figure.
+    pub cells: usize,
+    /// Number of figures.
+    pub figures: usize,
+    /// The reference piece count (best known for this layout).
+    pub reference: Option<usize>,
+    /// What the paper reports for the figures this instance reconstructs.
+    pub paper: Option<PaperResult>,
+    /// The time limit of each run.
+    pub time_limit: Option<Duration>,
+    /// One run per seed.
+    pub runs: Vec<SeedRun>,
+}
+
+/// One step of a scaling series.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScaleStep {
+    /// The factor: every cell became `k×k` (or `k×k×k`) cells.
+    pub k: u32,
+    /// Cells per figure.
+    pub cells: usize,
+    /// One run per seed.
+    pub runs: Vec<SeedRun>,
+}
+
+/// How tables are printed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// Space-aligned columns for a terminal.
+    Text,
+    /// A Markdown table.
+    Markdown,
+}
+
+/// The upper median and the maximum, with `None` greater than any value.
+pub fn median_worst<T: Ord + Copy>(values: &[Option<T>]) -> Option<(Option<T>, Option<T>)> {
+    if values.is_empty() {
+        return None;
+    }
+    let mut v = values.to_vec();
+    // `None` last: a run that found nothing is the worst.
+    v.sort_by(|a, b| match (a, b) {
+        (Some(x), Some(y)) => x.cmp(y),
+        (Some(_), None) => std::cmp::Ordering::Less,
+        (None, Some(_)) => std::cmp::Ordering::Greater,
+        (None, None) => std::cmp::Ordering::Equal,
+    });
+    Some((v[v.len() / 2], v[v.len() - 1]))
+}
+
+/// The upper median of the finite values, if any.
+pub fn median_f64(values: impl IntoIterator<Item = f64>) -> Option<f64> {
+    let mut v: Vec<f64> = values.into_iter().filter(|x| x.is_finite()).collect();
+    if v.is_empty() {
+        return None;
+    }
+    v.sort_by(f64::total_cmp);
+    Some(v[v.len() / 2])
+}
+
+/// A duration in seconds, with fewer decimals as it grows.
+pub fn secs(d: Duration) -> String {
+    let s = d.as_secs_f64();
+    if s < 10.0 {
+        format!("{s:.2}")
+    } else if s < 100.0 {
+        format!("{s:.1}")
+    } else {
+        format!("{s:.0}")
+    }
+}
+
+fn pair<T: Copy>(mw: Option<(Option<T>, Option<T>)>, show: impl Fn(T) -> String) -> String {
+    let one = |v: Option<T>| v.map_or("none".to_string(), &show);
+    match mw {
+        None => "-".to_string(),
+        Some((m, w)) => format!("{} / {}", one(m), one(w)),
+    }
+}
+
+impl InstanceResult {
+    /// Median and worst piece count.
+    pub fn pieces(&self) -> Option<(Option<usize>, Option<usize>)> {
+        median_worst(&self.runs.iter().map(|r| r.pieces).collect::<Vec<_>>())
+    }
+
+    /// Median and worst time to the first valid dissection.
+    pub fn first_valid(&self) -> Option<(Option<Duration>, Option<Duration>)> {
+        median_worst(&self.runs.iter().map(|r| r.first_valid).collect::<Vec<_>>())
+    }
+
+    /// Median and worst total time.
+    pub fn total(&self) -> Option<(Option<Duration>, Option<Duration>)> {
+        median_worst(&self.runs.iter().map(|r| Some(r.total)).collect::<Vec<_>>())
+    }
+
+    /// How many seeds reached the reference piece count (or fewer).
+    pub fn reached(&self) -> Option<usize> {
+        let r = self.reference?;
+        Some(
+            self.runs
+                .iter()
+                .filter(|s| s.pieces.is_some_and(|p| p <= r))
+                .count(),
+        )
+    }
+
+    /// Whether any run failed verification or could not run.
+    pub fn has_error(&self) -> bool {
+        self.runs.iter().any(SeedRun::is_error)
+    }
+}
+
+/// The summary table: one row per instance.
+pub fn suite_table(results: &[InstanceResult], style: Style) -> String {
+    let headers = [
+        "instance",
+        "lattice",
+        "cells",
+        "ref",
+        "paper pieces",
+        "paper time",
+        "pieces med / worst",
+        "first valid s med / worst",
+        "total s med / worst",
+        "area var (med)",
+        "reached ref",
+    ];
+    let rows: Vec<Vec<String>> = results
+        .iter()
+        .map(|r| {
+            let reached = match (r.has_error(), r.reached()) {
+                (true, _) => "ERROR".to_string(),
+                (false, Some(n)) => format!("{n}/{}", r.runs.len()),
+                (false, None) => "n/a".to_string(),
+            };
+            let cells = if r.figures > 2 {
+                format!("{}×{}", r.figures, r.cells)
+            } else {
+                r.cells.to_string()
+            };
+            vec![
+                r.name.clone(),
+                r.lattice.to_string(),
+                cells,
+                r.reference.map_or("-".to_string(), |v| v.to_string()),
+                r.paper
+                    .map_or("-".to_string(), |p| format!("{} ({})", p.pieces, p.figure)),
+                r.paper.map_or("-".to_string(), |p| p.time.to_string()),
+                pair(r.pieces(), |v| v.to_string()),
+                pair(r.first_valid(), secs),
+                pair(r.total(), secs),
+                median_f64(r.runs.iter().filter_map(|s| s.variance))
+                    .map_or("-".to_string(), |v| format!("{v:.1}")),
+                reached,
+            ]
+        })
+        .collect();
+    table(&headers, &rows, style)
+}
+
+/// Every run: one row per instance and seed.
+pub fn seed_table(results: &[InstanceResult], style: Style) -> String {
+    let headers = [
+        "instance",
+        "seed",
+        "pieces",
+        "first valid s",
+        "total s",
+        "area var",
+        "explorations",
+        "note",
+    ];
+    let mut rows = Vec::new();
+    for r in results {
+        for s in &r.runs {
+            rows.push(vec![
+                r.name.clone(),
+                s.seed.to_string(),
+                s.pieces.map_or("none".to_string(), |v| v.to_string()),
+                s.first_valid.map_or("-".to_string(), secs),
+                secs(s.total),
+                s.variance.map_or("-".to_string(), |v| format!("{v:.1}")),
+                s.explorations.to_string(),
+                note(s),
+            ]);
+        }
+    }
+    table(&headers, &rows, style)
+}
+
+/// What a run's table row says beyond its numbers.
+fn note(s: &SeedRun) -> String {
+    if let Some(e) = &s.error {
+        return e.clone();
+    }
+    if s.pieces.is_none() {
+        let (k, em) = s.last_level;
+        return format!(
+            "{}; best {k}-piece E_M = {}",
+            if s.stopped { "time limit" } else { "gave up" },
+            em.map_or("n/a".to_string(), |m| m.to_string())
+        );
+    }
+    String::new()
+}
+
+/// The growth exponent between two steps: `ln(t2/t1) / ln(c2/c1)`.
+pub fn growth_exponent(c1: usize, t1: Duration, c2: usize, t2: Duration) -> Option<f64> {
+    let (t1, t2) = (t1.as_secs_f64(), t2.as_secs_f64());
+    if c2 == c1 || t1 <= 0.0 || t2 <= 0.0 {
+        return None;
+    }
+    Some((t2 / t1).ln() / (c2 as f64 / c1 as f64).ln())
+}
+
+/// The scaling table: one row per factor, with the growth exponent of the
+/// median time to the first valid dissection against the previous row.
+pub fn scale_table(steps: &[ScaleStep], style: Style) -> String {
+    let headers = [
+        "k",
+        "cells",
+        "pieces med / worst",
+        "first valid s med / worst",
+        "total s med / worst",
+        "exponent vs previous k",
+    ];
+    let median_first = |s: &ScaleStep| {
+        median_worst(&s.runs.iter().map(|r| r.first_valid).collect::<Vec<_>>()).and_then(|(m, _)| m)
+    };
+    let rows: Vec<Vec<String>> = steps
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let exponent = i
+                .checked_sub(1)
+                .and_then(|p| {
+                    let prev = &steps[p];
+                    growth_exponent(prev.cells, median_first(prev)?, s.cells, median_first(s)?)
+                })
+                .map_or("-".to_string(), |e| format!("{e:.2}"));
+            let errors = s.runs.iter().filter(|r| r.is_error()).count();
+            let pieces = pair(
+                median_worst(&s.runs.iter().map(|r| r.pieces).collect::<Vec<_>>()),
+                |v| v.to_string(),
+            );
+            vec![
+                s.k.to_string(),
+                s.cells.to_string(),
+                if errors > 0 {
+                    format!("{pieces} ({errors} ERROR)")
+                } else {
+                    pieces
+                },
+                pair(
+                    median_worst(&s.runs.iter().map(|r| r.first_valid).collect::<Vec<_>>()),
+                    secs,
+                ),
+                pair(
+                    median_worst(&s.runs.iter().map(|r| Some(r.total)).collect::<Vec<_>>()),
+                    secs,
+                ),
+                exponent,
+            ]
+        })
+        .collect();
+    table(&headers, &rows, style)
+}
+
+/// Lays out a table.
+pub fn table(headers: &[&str], rows: &[Vec<String>], style: Style) -> String {
+    let mut out = String::new();
+    match style {
+        Style::Markdown => {
+            let line = |cells: Vec<&str>| format!("| {} |\n", cells.join(" | "));
+            out += &line(headers.to_vec());
+            out += &line(headers.iter().map(|_| "---").collect());
+            for r in rows {
+                out += &line(r.iter().map(|c| c.as_str()).collect());
+            }
+        }
+        Style::Text => {
+            let mut width: Vec<usize> = headers.iter().map(|h| h.chars().count()).collect();
+            for r in rows {
+                for (w, c) in width.iter_mut().zip(r) {
+                    *w = (*w).max(c.chars().count());
+                }
+            }
+            let line = |cells: Vec<&str>| {
+                let padded: Vec<String> = cells
+                    .iter()
+                    .zip(&width)
+                    .map(|(c, w)| format!("{c}{}", " ".repeat(w - c.chars().count())))
+                    .collect();
+                format!("{}\n", padded.join("  ").trim_end())
+            };
+            out += &line(headers.to_vec());
+            let rule: Vec<String> = width.iter().map(|w| "-".repeat(*w)).collect();
+            out += &line(rule.iter().map(String::as_str).collect());
+            for r in rows {
+                out += &line(r.iter().map(|c| c.as_str()).collect());
+            }
+        }
+    }
+    out
+}

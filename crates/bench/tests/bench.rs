@@ -1,0 +1,515 @@
+//! Tests of the benchmark harness: the manifest, the scaler, timed and
+//! verified runs, the tables (golden files) and the binary end to end.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Duration;
+
+use dissect_bench::manifest::Manifest;
+use dissect_bench::paper::paper_result;
+use dissect_bench::report::{
+    growth_exponent, median_worst, scale_table, seed_table, suite_table, InstanceResult, ScaleStep,
+    Style,
+};
+use dissect_bench::run::{run_seed, SeedRun};
+use dissect_bench::scale::scale;
+use dissect_bench::{BenchError, Plan};
+use dissect_core::io::{format_figure, parse_figure};
+use dissect_core::solver::Options;
+use dissect_core::verify::verify_pieces;
+use dissect_core::{Figure, LatticeKind};
+
+/// `../shared` beside the repository.
+fn shared() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared")
+}
+
+fn fig(lattice: LatticeKind, text: &str) -> Figure {
+    parse_figure(text, lattice).expect("test figure parses")
+}
+
+fn square(text: &str) -> Figure {
+    fig(LatticeKind::Square, text)
+}
+
+/// Small, quick solver settings.
+fn quick() -> Options {
+    Options {
+        explorations: 24,
+        keep: 6,
+        iterations: 20,
+        threads: 2,
+        ..Options::default()
+    }
+}
+
+// ---------------------------------------------------------------- manifest
+
+#[test]
+fn shared_manifest_parses_and_every_instance_loads() {
+    let m = Manifest::load(&shared().join("instances")).expect("shared manifest");
+    let names: Vec<&str> = m.instances().iter().map(|i| i.name.as_str()).collect();
+    for expected in [
+        "rect10x7-hole-to-square8",
+        "rect15x10-hole-to-square12",
+        "squares-3-4-split-to-5",
+        "squares-12-5-joined-to-13",
+        "squares-6-6-7-split-to-11",
+        "sierpinski9-to-square8",
+        "three-square12-rect16x12cross-rect16x9",
+        "cube4-cavity-to-7x4x2",
+        "cubes-3-4-5-to-6",
+        "tri-triangle8-to-rect4x8",
+    ] {
+        assert!(
+            names.contains(&expected),
+            "{expected} missing from {names:?}"
+        );
+    }
+    for inst in m.instances() {
+        let figures = inst.load_figures(m.root()).expect("instance loads");
+        assert_eq!(figures.len(), inst.files.len(), "{}", inst.name);
+        assert!(figures.iter().all(|f| f.lattice() == inst.lattice()));
+        assert!(figures.iter().all(|f| Some(f.len()) == inst.area));
+        if inst.lattice() != LatticeKind::Tri4 {
+            assert!(paper_result(&inst.name).is_some(), "{}", inst.name);
+        }
+    }
+    let joined = m.get("cubes-3-4-5-joined-to-6").expect("joined cubes");
+    assert_eq!(joined.reference, None);
+    assert_eq!(joined.paper_pieces, Some(6));
+}
+
+#[test]
+fn manifest_json_error_names_file_line_and_column() {
+    let path = Path::new("some/dir/manifest.json");
+    let text = "[\n {\"name\": \"a\",\n  \"lattice\": square}\n]";
+    let err = Manifest::parse(text, path).expect_err("bad JSON");
+    let msg = err.to_string();
+    assert!(
+        matches!(err, BenchError::ManifestJson { line: 3, .. }),
+        "{err:?}"
+    );
+    assert!(
+        msg.starts_with("some/dir/manifest.json: line 3, column "),
+        "{msg}"
+    );
+}
+
+#[test]
+fn manifest_entry_errors_name_the_instance() {
+    let path = Path::new("m.json");
+    let cases = [
+        (
+            r#"[{"name": "x", "lattice": "hex", "files": ["a.txt"]}]"#,
+            r#"m.json: instance "x" unknown lattice "hex""#,
+        ),
+        (
+            r#"[{"name": "y", "lattice": "square", "files": []}]"#,
+            r#"m.json: instance "y" lists no figure files"#,
+        ),
+        (
+            r#"[{"name": "z", "lattice": "square"}]"#,
+            "m.json: line 1, column",
+        ),
+    ];
+    for (text, want) in cases {
+        let msg = Manifest::parse(text, path).expect_err(text).to_string();
+        assert!(msg.starts_with(want), "{msg:?} should start with {want:?}");
+    }
+    let m = Manifest::parse(
+        r#"[{"name": "a", "lattice": "square", "files": ["a.txt"]}]"#,
+        path,
+    )
+    .expect("valid");
+    let msg = m.get("b").expect_err("unknown").to_string();
+    assert_eq!(msg, r#"m.json: no instance "b"; known: a"#);
+}
+
+#[test]
+fn figure_errors_name_the_file_line_and_column() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::create_dir(dir.path().join("i")).expect("mkdir");
+    std::fs::write(dir.path().join("i/a.txt"), "##\n#x\n").expect("write");
+    std::fs::write(dir.path().join("i/b.txt"), "###\n").expect("write");
+    std::fs::write(
+        dir.path().join("manifest.json"),
+        r#"[{"name": "i", "lattice": "square", "files": ["a.txt", "b.txt"], "area": 3}]"#,
+    )
+    .expect("write");
+    let m = Manifest::load(dir.path()).expect("manifest");
+    let msg = m.instances()[0]
+        .load_figures(m.root())
+        .expect_err("bad figure")
+        .to_string();
+    assert!(
+        msg.contains("i/a.txt: line 2, column 2: unexpected character 'x'"),
+        "{msg}"
+    );
+
+    std::fs::write(dir.path().join("i/a.txt"), "##\n").expect("write");
+    let msg = m.instances()[0]
+        .load_figures(m.root())
+        .expect_err("wrong area")
+        .to_string();
+    assert!(
+        msg.ends_with("i/a.txt: 2 cells, the manifest says 3"),
+        "{msg}"
+    );
+
+    let msg = Manifest::load(&dir.path().join("nowhere"))
+        .expect_err("missing")
+        .to_string();
+    assert!(msg.contains("nowhere/manifest.json: cannot read"), "{msg}");
+}
+
+// ------------------------------------------------------------------ scaler
+
+#[test]
+fn scaling_multiplies_cells_and_keeps_the_topology() {
+    let cases = [
+        (LatticeKind::Square, "###\n#.#\n###\n", 2),
+        (LatticeKind::Square, "#.#\n##.\n", 2),
+        (LatticeKind::Tri4, "C6\n3F\n", 2),
+        (LatticeKind::Tri4, "1.4\n", 2),
+        (LatticeKind::Cubic, "###\n#.#\n###\n\n###\n###\n###\n", 3),
+    ];
+    for (lattice, text, dim) in cases {
+        let f = fig(lattice, text);
+        let s1 = f.stats();
+        for k in 1..=4u32 {
+            let g = scale(&f, k).expect("scales");
+            let s = g.stats();
+            assert_eq!(g.len(), f.len() * (k as usize).pow(dim), "{text} k={k}");
+            assert_eq!(s.components, s1.components, "{text} k={k}");
+            assert_eq!(s.holes, s1.holes, "{text} k={k}");
+            let ki = k as i32;
+            for a in 0..dim as usize {
+                assert_eq!(s.min[a], s1.min[a] * ki);
+                assert_eq!(s.max[a], s1.max[a] * ki + ki - 1);
+            }
+        }
+        assert_eq!(scale(&f, 1).expect("k = 1"), f);
+    }
+}
+
+#[test]
+fn scaling_draws_the_expected_figures() {
+    let cases = [
+        (
+            LatticeKind::Square,
+            "##\n#.\n",
+            2,
+            "####\n####\n##..\n##..\n",
+        ),
+        // Half squares below and above the `\` diagonal.
+        (LatticeKind::Tri4, "C\n", 2, "C.\nFC\n"),
+        (LatticeKind::Tri4, "3\n", 2, "3F\n.3\n"),
+        // The top triangle alone; half squares of the `/` diagonal.
+        (LatticeKind::Tri4, "1\n", 2, "39\n"),
+        (LatticeKind::Tri4, "6\n", 3, "..6\n.6F\n6FF\n"),
+        (
+            LatticeKind::Cubic,
+            "#\n\n#\n",
+            2,
+            "##\n##\n\n##\n##\n\n##\n##\n\n##\n##\n",
+        ),
+    ];
+    for (lattice, text, k, want) in cases {
+        let got = scale(&fig(lattice, text), k).expect("scales");
+        assert_eq!(
+            got,
+            fig(lattice, want),
+            "{lattice} {text:?} ×{k}:\n{}",
+            format_figure(&got)
+        );
+    }
+    assert!(matches!(
+        scale(&square("#\n"), 0),
+        Err(BenchError::ScaleFactor)
+    ));
+}
+
+#[test]
+fn a_scaled_dissection_keeps_its_piece_count() {
+    // The 2×2 square and the 1×4 bar: 2 pieces at every scale.
+    let a = square("##\n##\n");
+    let b = square("####\n");
+    let plan = Plan {
+        seeds: vec![1, 2],
+        options: quick(),
+        time_limit_2d: Some(Duration::from_secs(60)),
+        time_limit_3d: None,
+    };
+    let mut seen = 0;
+    let steps = plan
+        .run_scaling(&[a.clone(), b.clone()], &[1, 2, 3], |_, _| seen += 1)
+        .expect("runs");
+    assert_eq!(seen, 6);
+    assert_eq!(
+        steps.iter().map(|s| s.cells).collect::<Vec<_>>(),
+        [4, 16, 36]
+    );
+    for s in &steps {
+        let figures = [scale(&a, s.k).expect("a"), scale(&b, s.k).expect("b")];
+        for r in &s.runs {
+            assert_eq!(r.error, None);
+            assert_eq!(r.pieces, Some(2), "k = {}", s.k);
+            let found = r.found.as_ref().expect("found");
+            assert_eq!(
+                verify_pieces(LatticeKind::Square, true, &figures, &found.pieces),
+                Ok(2)
+            );
+            assert!(r.first_valid.expect("first valid") <= r.total);
+        }
+    }
+}
+
+// -------------------------------------------------------------------- runs
+
+#[test]
+fn a_run_is_verified_and_reproducible() {
+    let a = square("###\n#..\n");
+    let b = square("##\n##\n");
+    let options = Options { seed: 7, ..quick() };
+    let r1 = run_seed(&[a.clone(), b.clone()], &options, None);
+    let r2 = run_seed(&[a.clone(), b.clone()], &options, None);
+    assert_eq!(r1.error, None);
+    assert_eq!(r1.pieces, Some(2));
+    assert_eq!(r1.seed, 7);
+    assert!(!r1.stopped);
+    let found = r1.found.as_ref().expect("found");
+    assert_eq!(
+        verify_pieces(LatticeKind::Square, true, &[a, b], &found.pieces),
+        Ok(2)
+    );
+    assert_eq!(r1.found, r2.found, "same seed, same dissection");
+}
+
+#[test]
+fn the_time_limit_stops_a_run() {
+    let m = Manifest::load(&shared().join("instances")).expect("shared manifest");
+    let inst = m.get("sierpinski9-to-square8").expect("instance");
+    let figures = inst.load_figures(m.root()).expect("loads");
+    let r = run_seed(&figures, &quick(), Some(Duration::from_millis(30)));
+    assert!(r.stopped, "{r:?}");
+    assert!(r.total < Duration::from_secs(10), "{r:?}");
+    assert_eq!(r.error, None);
+    if let Some(found) = &r.found {
+        assert_eq!(
+            verify_pieces(LatticeKind::Square, true, &figures, &found.pieces),
+            Ok(found.piece_count())
+        );
+    }
+}
+
+#[test]
+fn the_solver_refusing_figures_is_an_error_row() {
+    let r = run_seed(&[square("##\n"), square("###\n")], &quick(), None);
+    let e = r.error.expect("unequal areas");
+    assert!(e.contains("different areas"), "{e}");
+    assert_eq!(r.pieces, None);
+}
+
+// ------------------------------------------------------------------ report
+
+#[test]
+fn median_and_worst_count_a_missing_result_as_worst() {
+    assert_eq!(median_worst::<u32>(&[]), None);
+    assert_eq!(median_worst(&[Some(3)]), Some((Some(3), Some(3))));
+    assert_eq!(
+        median_worst(&[Some(3), None, Some(2)]),
+        Some((Some(3), None))
+    );
+    assert_eq!(
+        median_worst(&[Some(5), Some(2), Some(9)]),
+        Some((Some(5), Some(9)))
+    );
+    // Even counts take the upper middle value.
+    assert_eq!(median_worst(&[Some(1), Some(4)]), Some((Some(4), Some(4))));
+    let s = Duration::from_secs;
+    assert_eq!(growth_exponent(100, s(1), 400, s(4)), Some(1.0));
+    assert_eq!(growth_exponent(100, s(2), 400, s(32)), Some(2.0));
+    assert_eq!(growth_exponent(100, s(2), 100, s(3)), None);
+}
+
+fn seed_run(seed: u64, pieces: Option<usize>, first: Option<u64>, total: u64) -> SeedRun {
+    SeedRun {
+        seed,
+        pieces,
+        first_valid: first.map(Duration::from_millis),
+        total: Duration::from_millis(total),
+        variance: pieces.map(|p| p as f64 * 1.5),
+        stopped: pieces.is_none(),
+        explorations: 400 * seed as usize,
+        last_level: (
+            pieces.unwrap_or(6),
+            Some(if pieces.is_some() { 0 } else { 8 }),
+        ),
+        error: None,
+        found: None,
+    }
+}
+
+fn sample_results() -> Vec<InstanceResult> {
+    let mut broken = seed_run(2, None, None, 1_500);
+    broken.error = Some("BUG: verification failed".to_string());
+    vec![
+        InstanceResult {
+            name: "rect10x7-hole-to-square8".to_string(),
+            lattice: LatticeKind::Square,
+            cells: 64,
+            figures: 2,
+            reference: Some(2),
+            paper: paper_result("rect10x7-hole-to-square8"),
+            time_limit: Some(Duration::from_secs(300)),
+            runs: vec![
+                seed_run(1, Some(2), Some(40), 40),
+                seed_run(2, Some(2), Some(25), 31),
+                seed_run(3, Some(3), Some(1_250), 12_500),
+            ],
+        },
+        InstanceResult {
+            name: "three-square12-rect16x12cross-rect16x9".to_string(),
+            lattice: LatticeKind::Square,
+            cells: 144,
+            figures: 3,
+            reference: Some(6),
+            paper: paper_result("three-square12-rect16x12cross-rect16x9"),
+            time_limit: Some(Duration::from_secs(300)),
+            runs: vec![seed_run(1, None, None, 300_000), broken],
+        },
+        InstanceResult {
+            name: "cubes-3-4-5-joined-to-6".to_string(),
+            lattice: LatticeKind::Cubic,
+            cells: 216,
+            figures: 2,
+            reference: None,
+            paper: paper_result("cubes-3-4-5-joined-to-6"),
+            time_limit: Some(Duration::from_secs(600)),
+            runs: vec![seed_run(1, Some(7), Some(123_456), 123_456)],
+        },
+    ]
+}
+
+fn sample_steps() -> Vec<ScaleStep> {
+    vec![
+        ScaleStep {
+            k: 1,
+            cells: 144,
+            runs: vec![seed_run(1, Some(3), Some(500), 500)],
+        },
+        ScaleStep {
+            k: 2,
+            cells: 576,
+            runs: vec![seed_run(1, Some(3), Some(2_000), 2_000)],
+        },
+        ScaleStep {
+            k: 4,
+            cells: 2304,
+            runs: vec![seed_run(1, None, None, 60_000)],
+        },
+    ]
+}
+
+/// Compares `got` with `tests/golden/<name>`; `BLESS=1` rewrites it.
+fn golden(name: &str, got: &str) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/golden")
+        .join(name);
+    if std::env::var_os("BLESS").is_some() {
+        std::fs::create_dir_all(path.parent().expect("dir")).expect("mkdir");
+        std::fs::write(&path, got).expect("write golden");
+        return;
+    }
+    let want = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("{}: {e} (run with BLESS=1 to create it)", path.display()));
+    assert_eq!(
+        got,
+        want,
+        "{} differs (BLESS=1 rewrites it)",
+        path.display()
+    );
+}
+
+#[test]
+fn tables_match_their_golden_files() {
+    let results = sample_results();
+    let steps = sample_steps();
+    for (style, ext) in [(Style::Text, "txt"), (Style::Markdown, "md")] {
+        golden(&format!("suite.{ext}"), &suite_table(&results, style));
+        golden(&format!("seeds.{ext}"), &seed_table(&results, style));
+        golden(&format!("scaling.{ext}"), &scale_table(&steps, style));
+    }
+}
+
+// -------------------------------------------------------------- end to end
+
+#[test]
+fn the_binary_runs_a_manifest_and_its_solutions_pass_verify_py() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let root = dir.path().join("instances");
+    std::fs::create_dir_all(root.join("l-to-bar")).expect("mkdir");
+    std::fs::write(root.join("l-to-bar/a.txt"), "###\n#..\n").expect("write");
+    std::fs::write(root.join("l-to-bar/b.txt"), "##\n##\n").expect("write");
+    std::fs::write(
+        root.join("manifest.json"),
+        r#"[{"name": "l-to-bar", "lattice": "square", "reference": 2,
+             "files": ["a.txt", "b.txt"], "area": 4}]"#,
+    )
+    .expect("write");
+    let save = dir.path().join("out");
+    let out = Command::new(env!("CARGO_BIN_EXE_dissect-bench"))
+        .arg(&root)
+        .args(["--seeds", "1,2", "--time-limit", "60", "--threads", "2"])
+        .args(["--explorations", "24", "--keep", "6", "--iterations", "20"])
+        .args(["--markdown", "--per-seed", "--save"])
+        .arg(&save)
+        .output()
+        .expect("runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stdout}\n{stderr}");
+    assert!(
+        stdout.contains("| l-to-bar | square | 4 | 2 | - | - | 2 / 2 | "),
+        "{stdout}"
+    );
+    assert!(stdout.contains("| 2/2 |"), "{stdout}");
+    assert!(stderr.contains("l-to-bar seed 2: 2 pieces"), "{stderr}");
+    for seed in [1, 2] {
+        let v = Command::new("python3")
+            .arg(shared().join("tools/verify.py"))
+            .args(["--lattice", "square", "--solution"])
+            .arg(save.join(format!("l-to-bar-seed{seed}.json")))
+            .arg(root.join("l-to-bar/a.txt"))
+            .arg(root.join("l-to-bar/b.txt"))
+            .output()
+            .expect("python3 runs");
+        let text = String::from_utf8_lossy(&v.stdout);
+        assert!(v.status.success(), "{text}");
+        assert!(text.trim_end().ends_with("valid: 2 pieces"), "{text}");
+    }
+}
+
+#[test]
+fn the_binary_reports_bad_input_with_exit_code_2() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::write(dir.path().join("manifest.json"), "[{]").expect("write");
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_dissect-bench"))
+            .arg(dir.path())
+            .args(args)
+            .output()
+            .expect("runs")
+    };
+    let out = run(&[]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("manifest.json: line 1, column 3:"),
+        "{stderr}"
+    );
+    let out = run(&["--time-limit=-1"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--time-limit must be"));
+}
