@@ -1,0 +1,11 @@
+//! The topics of the integration suite.
+
+mod ascii_art;
+mod lattice;
+mod parse;
+mod solution_json;
+mod solve;
+mod stats;
+mod transform;
+pub mod util;
+mod verifier;

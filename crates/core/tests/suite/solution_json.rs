@@ -1,0 +1,143 @@
+//! The solution JSON format: round trip, defaults, unknown keys and errors.
+
+use dissect_core::io::{parse_solution, SolutionError, SOLUTION_FORMAT};
+use dissect_core::LatticeKind;
+
+use super::util::{dissection, Cubic, Square, Tri4};
+
+#[test]
+fn round_trip_on_every_lattice() {
+    let cases: [(LatticeKind, bool, &[&str]); 4] = [
+        (Square, true, &["AB|AB", "AABB"]),
+        (Square, false, &["AB|AB", "AABB", "A|A|B|B"]),
+        (Tri4, true, &["AABB A..A|B..B .", ".AA. ..AA|BB.. B..B"]),
+        (Cubic, false, &["AA|AA/BB|BB", "AABB|AABB"]),
+    ];
+    for (lattice, mirror, labelled) in cases {
+        let (_, d) = dissection(lattice, mirror, labelled);
+        let mut extra = serde_json::Map::new();
+        extra.insert("pieces".into(), serde_json::json!(2));
+        let json = d.to_file(extra.clone()).to_json();
+        let (file, back) = parse_solution(&json).unwrap_or_else(|e| panic!("{e}\n{json}"));
+        assert_eq!(back, d, "{json}");
+        assert_eq!(file.extra, extra);
+        assert_eq!(file.format.as_deref(), Some(SOLUTION_FORMAT));
+        assert_eq!(back.piece_count(), 2);
+        // The text is plain JSON that serde_json reads the same way.
+        let value: serde_json::Value = serde_json::from_str(&json).unwrap();
+        assert_eq!(value["lattice"], lattice.name());
+        let first_cell = &value["figures"][0]["pieces"][0][0];
+        let arity = if lattice == Square { 2 } else { 3 };
+        assert_eq!(first_cell.as_array().unwrap().len(), arity, "{json}");
+    }
+}
+
+#[test]
+fn golden_square_solution() {
+    let (_, d) = dissection(Square, true, &["AB|AB", "AABB"]);
+    let json = d.to_file(serde_json::Map::new()).to_json();
+    assert_eq!(
+        json,
+        r#"{
+  "format": "dissection-solution/1",
+  "lattice": "square",
+  "mirror": true,
+  "figures": [
+    {"name": "f0.txt", "pieces": [
+      [[0,0],[0,1]],
+      [[1,0],[1,1]]
+    ]},
+    {"name": "f1.txt", "pieces": [
+      [[0,0],[1,0]],
+      [[2,0],[3,0]]
+    ]}
+  ]
+}
+"#
+    );
+}
+
+#[test]
+fn defaults_and_unknown_keys() {
+    let text = r#"{"lattice": "tri4", "figures": [{"pieces": [[[0,0,1]]]}], "score": 3}"#;
+    let (file, d) = parse_solution(text).unwrap();
+    assert!(d.mirror, "mirror defaults to true in 2D");
+    assert_eq!(d.names, vec![String::new()]);
+    assert_eq!(d.pieces, vec![vec![vec![[0, 0, 1]]]]);
+    assert_eq!(file.extra["score"], 3);
+    let (_, d) = parse_solution(r#"{"lattice": "cubic", "figures": []}"#).unwrap();
+    assert!(!d.mirror, "never mirror in 3D");
+    let (_, d) = parse_solution(r#"{"lattice": "cubic", "mirror": true, "figures": []}"#).unwrap();
+    assert!(!d.mirror, "never mirror in 3D, even when asked");
+    let (_, d) =
+        parse_solution(r#"{"lattice": "square", "mirror": false, "figures": []}"#).unwrap();
+    assert!(!d.mirror);
+}
+
+#[test]
+fn errors() {
+    let json_error = |text: &str| match parse_solution(text) {
+        Err(SolutionError::Json { line, column, .. }) => (line, column),
+        other => panic!("{text:?}: {other:?}"),
+    };
+    assert_eq!(
+        json_error("{\n  \"lattice\": \"square\",\n  \"figures\": [}\n"),
+        (3, 15)
+    );
+    assert_eq!(
+        json_error("{\"lattice\": \"square\",\n \"figures\": [{\"pieces\": 7}]}"),
+        (2, 25)
+    );
+    let e = parse_solution(r#"{"lattice": "square"}"#).unwrap_err();
+    assert!(e.to_string().contains("missing field `figures`"), "{e}");
+    assert_eq!(
+        parse_solution(
+            r#"{"format": "dissection-solution/2", "lattice": "square", "figures": []}"#
+        ),
+        Err(SolutionError::WrongFormat("dissection-solution/2".into()))
+    );
+    assert_eq!(
+        parse_solution(r#"{"lattice": "hex", "figures": []}"#),
+        Err(SolutionError::UnknownLattice("hex".into()))
+    );
+    let bad_cell = |text: &str, figure, piece, cell: Vec<i64>, lattice| {
+        assert_eq!(
+            parse_solution(text),
+            Err(SolutionError::BadCell {
+                figure,
+                piece,
+                cell,
+                lattice
+            }),
+            "{text}"
+        );
+    };
+    bad_cell(
+        r#"{"lattice": "square", "figures": [{"pieces": [[[0,0]]]}, {"pieces": [[[0,0]], [[1,0,0]]]}]}"#,
+        1,
+        1,
+        vec![1, 0, 0],
+        Square,
+    );
+    bad_cell(
+        r#"{"lattice": "tri4", "figures": [{"pieces": [[[0,0,4]]]}]}"#,
+        0,
+        0,
+        vec![0, 0, 4],
+        Tri4,
+    );
+    bad_cell(
+        r#"{"lattice": "cubic", "figures": [{"pieces": [[[0,0]]]}]}"#,
+        0,
+        0,
+        vec![0, 0],
+        Cubic,
+    );
+    bad_cell(
+        r#"{"lattice": "square", "figures": [{"pieces": [[[0,3000000000]]]}]}"#,
+        0,
+        0,
+        vec![0, 3_000_000_000],
+        Square,
+    );
+}
