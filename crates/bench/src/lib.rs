@@ -7,6 +7,7 @@
 
 #![forbid(unsafe_code)]
 
+pub mod cpu;
 pub mod manifest;
 pub mod paper;
 pub mod report;

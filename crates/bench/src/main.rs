@@ -10,7 +10,7 @@ use clap::Parser;
 use dissect_bench::manifest::{Instance, Manifest};
 use dissect_bench::report::{self, InstanceResult, ScaleStep, Style};
 use dissect_bench::run::SeedRun;
-use dissect_bench::{scale, Plan};
+use dissect_bench::{cpu, scale, Plan};
 use dissect_core::io::{format_figure, Dissection};
 use dissect_core::solver::Options;
 use dissect_core::{Figure, LatticeKind};
@@ -131,6 +131,7 @@ fn run(args: Args) -> Result<bool> {
             .with_context(|| format!("{}: cannot create directory", dir.display()))?;
     }
     println!("{}", settings(&plan, &args, style));
+    let load_before = cpu::load_average();
     if args.scaling {
         let instance = manifest.get(&args.scale_instance)?;
         let figures = instance.load_figures(manifest.root())?;
@@ -152,6 +153,7 @@ fn run(args: Args) -> Result<bool> {
         );
         println!("{}", heading(&what, style));
         print!("{}", report::scale_table(&steps, style));
+        println!("\n{}", load_note(load_before, cpu::load_average()));
         return Ok(!steps.iter().flat_map(|s| &s.runs).any(SeedRun::is_error));
     }
 
@@ -172,6 +174,7 @@ fn run(args: Args) -> Result<bool> {
         println!("\n{}", heading("Every run", style));
         print!("{}", report::seed_table(&results, style));
     }
+    println!("\n{}", load_note(load_before, cpu::load_average()));
     let errors: Vec<String> = results
         .iter()
         .flat_map(|r| r.runs.iter().map(move |s| (r, s)))
@@ -269,6 +272,22 @@ fn settings(plan: &Plan, args: &Args, style: Style) -> String {
     }
 }
 
+/// The machine's load average before and after the runs: above the number
+/// of solver threads, other jobs shared the CPU.
+fn load_note(before: Option<[f64; 3]>, after: Option<[f64; 3]>) -> String {
+    let show = |l: Option<[f64; 3]>| {
+        l.map_or("unknown".to_string(), |l| {
+            format!("{:.2} / {:.2} / {:.2}", l[0], l[1], l[2])
+        })
+    };
+    format!(
+        "Load average (1 / 5 / 15 min) before the runs: {}; after: {}; cores: {}.",
+        show(before),
+        show(after),
+        std::thread::available_parallelism().map_or(0, |n| n.get())
+    )
+}
+
 fn heading(text: &str, style: Style) -> String {
     match style {
         Style::Markdown => format!("#### {text}\n"),
@@ -284,9 +303,10 @@ fn progress(what: &str, r: &SeedRun) -> String {
     }
     match r.pieces {
         Some(p) => format!(
-            "{head} {p} pieces, first valid {} s, total {} s, area variance {:.1}",
+            "{head} {p} pieces, first valid {} s, total {} s (CPU {} s), area variance {:.1}",
             r.first_valid.map_or("-".to_string(), report::secs),
             report::secs(r.total),
+            r.cpu.map_or("-".to_string(), report::secs),
             r.variance.unwrap_or(f64::NAN),
         ),
         None => format!(

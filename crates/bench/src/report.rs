@@ -144,6 +144,7 @@ pub fn suite_table(results: &[InstanceResult], style: Style) -> String {
         "pieces med / worst",
         "first valid s med / worst",
         "total s med / worst",
+        "CPU s (med)",
         "area var (med)",
         "reached ref",
     ];
@@ -171,6 +172,7 @@ pub fn suite_table(results: &[InstanceResult], style: Style) -> String {
                 pair(r.pieces(), |v| v.to_string()),
                 pair(r.first_valid(), secs),
                 pair(r.total(), secs),
+                median_cpu(&r.runs),
                 median_f64(r.runs.iter().filter_map(|s| s.variance))
                     .map_or("-".to_string(), |v| format!("{v:.1}")),
                 reached,
@@ -188,6 +190,7 @@ pub fn seed_table(results: &[InstanceResult], style: Style) -> String {
         "pieces",
         "first valid s",
         "total s",
+        "CPU s",
         "area var",
         "explorations",
         "note",
@@ -201,6 +204,7 @@ pub fn seed_table(results: &[InstanceResult], style: Style) -> String {
                 s.pieces.map_or("none".to_string(), |v| v.to_string()),
                 s.first_valid.map_or("-".to_string(), secs),
                 secs(s.total),
+                s.cpu.map_or("-".to_string(), secs),
                 s.variance.map_or("-".to_string(), |v| format!("{v:.1}")),
                 s.explorations.to_string(),
                 note(s),
@@ -208,6 +212,12 @@ pub fn seed_table(results: &[InstanceResult], style: Style) -> String {
         }
     }
     table(&headers, &rows, style)
+}
+
+/// The median CPU time of the runs that report one.
+fn median_cpu(runs: &[SeedRun]) -> String {
+    median_f64(runs.iter().filter_map(|r| r.cpu).map(|d| d.as_secs_f64()))
+        .map_or("-".to_string(), |c| secs(Duration::from_secs_f64(c)))
 }
 
 /// What a run's table row says beyond its numbers.
@@ -244,6 +254,7 @@ pub fn scale_table(steps: &[ScaleStep], style: Style) -> String {
         "pieces med / worst",
         "first valid s med / worst",
         "total s med / worst",
+        "CPU s (med)",
         "exponent vs previous k",
     ];
     let median_first = |s: &ScaleStep| {
@@ -281,6 +292,7 @@ pub fn scale_table(steps: &[ScaleStep], style: Style) -> String {
                     median_worst(&s.runs.iter().map(|r| Some(r.total)).collect::<Vec<_>>()),
                     secs,
                 ),
+                median_cpu(&s.runs),
                 exponent,
             ]
         })

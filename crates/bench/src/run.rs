@@ -23,6 +23,10 @@ pub struct SeedRun {
     pub first_valid: Option<Duration>,
     /// From the start of `solve` to its return.
     pub total: Duration,
+    /// CPU time of the process (every thread) during the run, where the
+    /// platform tells it: on a shared machine it shows how much of the wall
+    /// time the run really had.
+    pub cpu: Option<Duration>,
     /// Area variance of the reported dissection.
     pub variance: Option<f64>,
     /// Whether the time limit stopped the search.
@@ -66,6 +70,7 @@ impl Observer for FirstValid {
 /// stopping it after `time_limit`, and verifies what it returns.
 pub fn run_seed(figures: &[Figure], options: &Options, time_limit: Option<Duration>) -> SeedRun {
     let stop = AtomicBool::new(false);
+    let cpu_start = crate::cpu::process_cpu_time();
     let finished = (Mutex::new(false), Condvar::new());
     let start = Instant::now();
     let observer = FirstValid {
@@ -96,12 +101,16 @@ pub fn run_seed(figures: &[Figure], options: &Options, time_limit: Option<Durati
         outcome
     });
     let total = start.elapsed();
+    let cpu = crate::cpu::process_cpu_time()
+        .zip(cpu_start)
+        .map(|(end, start)| end.saturating_sub(start));
     let first_valid = *observer.at.lock().expect("observer lock");
     let mut run = SeedRun {
         seed: options.seed,
         pieces: None,
         first_valid: None,
         total,
+        cpu,
         variance: None,
         stopped: false,
         explorations: 0,

@@ -339,6 +339,7 @@ fn seed_run(seed: u64, pieces: Option<usize>, first: Option<u64>, total: u64) ->
         pieces,
         first_valid: first.map(Duration::from_millis),
         total: Duration::from_millis(total),
+        cpu: Some(Duration::from_millis(total * 3 / 2)),
         variance: pieces.map(|p| p as f64 * 1.5),
         stopped: pieces.is_none(),
         explorations: 400 * seed as usize,
@@ -512,4 +513,31 @@ fn the_binary_reports_bad_input_with_exit_code_2() {
     let out = run(&["--time-limit=-1"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--time-limit must be"));
+}
+
+#[test]
+fn cpu_time_is_read_from_a_proc_stat_line() {
+    // Fields 14 and 15 (utime, stime) are 250 and 50 ticks; the command
+    // name holds a space and a parenthesis.
+    let line = "4242 (my (bench) x) R 1 2 3 4 5 6 7 8 9 10 250 50 0 0 20 0 3 0 99";
+    assert_eq!(
+        dissect_bench::cpu::parse_stat_cpu(line),
+        Some(Duration::from_secs(3))
+    );
+    assert_eq!(dissect_bench::cpu::parse_stat_cpu("1 (x) R 1 2"), None);
+    if cfg!(target_os = "linux") {
+        // Busy work advances the process's CPU time (within 10 s of wall
+        // time even on a crowded machine).
+        let before = dissect_bench::cpu::process_cpu_time().expect("/proc/self/stat");
+        let start = std::time::Instant::now();
+        let mut x = 0u64;
+        let mut now = before;
+        while now <= before && start.elapsed() < Duration::from_secs(10) {
+            for _ in 0..100_000 {
+                x = std::hint::black_box(x.wrapping_mul(6364136223846793005).wrapping_add(1));
+            }
+            now = dissect_bench::cpu::process_cpu_time().expect("/proc/self/stat");
+        }
+        assert!(now > before, "{before:?} -> {now:?}");
+    }
 }

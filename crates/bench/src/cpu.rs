@@ -1,0 +1,37 @@
+//! Process CPU time and load average from `/proc` (Linux), so that runs on
+//! a shared machine can be told apart from runs on an idle one.
+
+use std::time::Duration;
+
+/// Kernel clock ticks per second for `/proc/self/stat` (`USER_HZ`, 100 on
+/// every Linux architecture we run on).
+const TICKS_PER_SECOND: u64 = 100;
+
+/// User plus system CPU time of this process so far (every thread, including
+/// threads that have ended), or `None` where `/proc` is not available.
+pub fn process_cpu_time() -> Option<Duration> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    parse_stat_cpu(&stat)
+}
+
+/// `utime + stime` of a `/proc/<pid>/stat` line.
+pub fn parse_stat_cpu(stat: &str) -> Option<Duration> {
+    // The command name (field 2) may hold spaces and parentheses: the
+    // fields after it start after the last ')'. utime and stime are fields
+    // 14 and 15, so 11 and 12 after the command.
+    let rest = &stat[stat.rfind(')')? + 1..];
+    let fields: Vec<&str> = rest.split_whitespace().collect();
+    let utime: u64 = fields.get(11)?.parse().ok()?;
+    let stime: u64 = fields.get(12)?.parse().ok()?;
+    Some(Duration::from_millis(
+        (utime + stime) * 1000 / TICKS_PER_SECOND,
+    ))
+}
+
+/// The 1-, 5- and 15-minute load averages, or `None` where `/proc` is not
+/// available.
+pub fn load_average() -> Option<[f64; 3]> {
+    let text = std::fs::read_to_string("/proc/loadavg").ok()?;
+    let mut it = text.split_whitespace().map(|f| f.parse::<f64>().ok());
+    Some([it.next()??, it.next()??, it.next()??])
+}
