@@ -6,7 +6,9 @@
 
 use crate::lattice::Symmetry;
 use crate::piece::Pieces;
+#[allow(unused_imports)] // for the docs
 use crate::solver::shape::Shape;
+use crate::solver::shape::Layout;
 use crate::transform::Transform;
 
 /// The symmetries and translation lattice the solver may use.
@@ -19,12 +21,16 @@ pub(crate) struct Geometry {
     pub(crate) modulus: i32,
 }
 
-/// One side of a distance computation: a labelled shape and its pieces.
+/// One side of a distance computation: a labelled shape's pieces, its cells'
+/// addresses under every symmetry (see [`Shape::moved`]) and its labels by
+/// address (see [`Layout::label_grid`]).
 #[derive(Clone, Copy)]
 pub(crate) struct Side<'a> {
-    pub(crate) shape: &'a Shape,
-    pub(crate) labels: &'a [u16],
     pub(crate) pieces: &'a Pieces,
+    pub(crate) moved: &'a [i64],
+    pub(crate) grid: &'a [u16],
+    pub(crate) origin: i64,
+    pub(crate) layout: &'a Layout,
 }
 
 fn floor_div(a: i64, b: i64) -> i64 {
@@ -49,11 +55,13 @@ pub(crate) fn distance(
     let sb = to.pieces.sum(b);
     let m = geo.modulus as i64;
     let cells = from.pieces.members(a);
-    let target = b as u16;
+    let n = from.moved.len() / geo.syms.len();
+    let target = b as u16 + 1;
     let mut best_overlap = 0u32;
     let mut best = Transform::IDENTITY;
     let mut found = false;
-    for sym in &geo.syms {
+    for (s, sym) in geo.syms.iter().enumerate() {
+        let moved = &from.moved[s * n..(s + 1) * n];
         let gs = sym.apply_wide(sa);
         // Translation candidates per moved coordinate: the exact centroid
         // offset is (sb/nb - g(sa)/na); in units of m it is num/den.
@@ -77,19 +85,25 @@ pub(crate) fn distance(
                         choices[1][iy] as i32,
                         choices[2][iz] as i32,
                     ];
-                    let t = Transform::new(*sym, shift);
+                    // Count hits in chunks, giving up once even all the
+                    // remaining cells could not beat the best overlap.
+                    let base = to.layout.linear(shift) - to.origin;
                     let mut overlap = 0u32;
-                    for &c in cells {
-                        if let Some(j) = to.shape.lookup(t.apply(from.shape.point(c))) {
-                            if to.labels[j as usize] == target {
-                                overlap += 1;
-                            }
+                    let mut left = cells.len() as u32;
+                    for chunk in cells.chunks(16) {
+                        if found && overlap + left <= best_overlap {
+                            break;
                         }
+                        for &c in chunk {
+                            let at = (base + moved[c as usize]) as usize;
+                            overlap += (to.grid.get(at).copied().unwrap_or(0) == target) as u32;
+                        }
+                        left -= chunk.len() as u32;
                     }
                     if !found || overlap > best_overlap {
                         found = true;
                         best_overlap = overlap;
-                        best = t;
+                        best = Transform::new(*sym, shift);
                         if overlap == best_possible {
                             return (distance_from_overlap(na, nb, overlap), best);
                         }

@@ -3,13 +3,44 @@
 use crate::distance::{Geometry, Side};
 use crate::matching::{match_pieces, PairMatching};
 use crate::piece::Pieces;
-use crate::solver::shape::Shape;
+use crate::solver::shape::{Layout, Shape};
 
 /// The figures of one solve, in solver form.
+///
+/// # Validity
+/// `moved[f]` is `shapes[f].moved(&geo.syms, &layout)`; built only by
+/// [`Problem::new`].
 #[derive(Clone, Debug)]
 pub(crate) struct Problem {
     pub(crate) shapes: Vec<Shape>,
     pub(crate) geo: Geometry,
+    layout: Layout,
+    moved: Vec<Vec<i64>>,
+}
+
+impl Problem {
+    /// The problem of these shapes under this geometry.
+    pub(crate) fn new(shapes: Vec<Shape>, geo: Geometry) -> Problem {
+        let layout = Layout::new(&shapes, geo.modulus);
+        let moved = shapes.iter().map(|s| s.moved(&geo.syms, &layout)).collect();
+        Problem { shapes, geo, layout, moved }
+    }
+
+    /// One side of a distance computation: figure `f` with these pieces.
+    fn side<'a>(&'a self, f: usize, pieces: &'a Pieces, grid: &'a [u16]) -> Side<'a> {
+        Side {
+            pieces,
+            moved: &self.moved[f],
+            grid,
+            origin: self.layout.origin(f),
+            layout: &self.layout,
+        }
+    }
+
+    /// Labels of figure `f` by address.
+    fn label_grid(&self, f: usize, labels: &[u16]) -> Vec<u16> {
+        self.layout.label_grid(f, &self.shapes[f], labels)
+    }
 }
 
 /// One labelling of every figure with piece ids `0..k`.
@@ -55,6 +86,7 @@ impl Candidate {
     /// the other figures so that matched pieces carry the pivot's labels.
     pub(crate) fn align(&mut self, problem: &Problem, pivot: usize) -> Aligned {
         let pp = self.pieces(problem, pivot);
+        let grid_p = problem.label_grid(pivot, &self.labels[pivot]);
         let mut pieces = Vec::with_capacity(problem.shapes.len());
         let mut matchings = Vec::with_capacity(problem.shapes.len());
         for f in 0..problem.shapes.len() {
@@ -64,18 +96,11 @@ impl Candidate {
                 continue;
             }
             let pf = self.pieces(problem, f);
+            let grid_f = problem.label_grid(f, &self.labels[f]);
             let m = match_pieces(
                 &problem.geo,
-                Side {
-                    shape: &problem.shapes[pivot],
-                    labels: &self.labels[pivot],
-                    pieces: &pp,
-                },
-                Side {
-                    shape: &problem.shapes[f],
-                    labels: &self.labels[f],
-                    pieces: &pf,
-                },
+                problem.side(pivot, &pp, &grid_p),
+                problem.side(f, &pf, &grid_f),
             );
             let mut relabel = vec![0u16; self.k];
             for (a, &b) in m.partner.iter().enumerate() {

@@ -102,15 +102,10 @@ fn split_worst<R: rand::Rng>(
         .iter()
         .map(|p| p.members(a).to_vec())
         .collect();
-    let sub = Problem {
-        shapes: problem
-            .shapes
-            .iter()
-            .zip(&members)
-            .map(|(s, m)| s.subset(m))
-            .collect(),
-        geo: problem.geo.clone(),
-    };
+    let sub = Problem::new(
+        problem.shapes.iter().zip(&members).map(|(s, m)| s.subset(m)).collect(),
+        problem.geo.clone(),
+    );
     let mut best: Option<(Candidate, Score)> = None;
     for _ in 0..options.split_tries.max(1) {
         let (c, s) = level_one(&sub, options, rng, stop);

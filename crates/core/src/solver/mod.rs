@@ -233,14 +233,14 @@ pub fn solve(
     check_figures(figures)?;
     let lattice = figures[0].lattice().lattice();
     let mirror = options.mirror && lattice.supports_mirror();
-    let problem = Problem {
-        shapes: figures.iter().map(Shape::of_figure).collect(),
-        geo: Geometry {
+    let problem = Problem::new(
+        figures.iter().map(Shape::of_figure).collect(),
+        Geometry {
             syms: lattice.symmetries(mirror),
             dim: lattice.dim(),
             modulus: lattice.modulus(),
         },
-    };
+    );
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.threads)
         .build()

@@ -33,18 +33,21 @@ impl Grid {
         Grid { lo, size, slots }
     }
 
+    /// The slot of point `p` in the box, if inside.
     #[inline]
-    fn get(&self, p: Point) -> Option<u32> {
+    fn slot(&self, p: Point) -> Option<usize> {
         let x = p[0].wrapping_sub(self.lo[0]);
         let y = p[1].wrapping_sub(self.lo[1]);
         let z = p[2].wrapping_sub(self.lo[2]);
-        if (x as u32) >= self.size[0] as u32
-            || (y as u32) >= self.size[1] as u32
-            || (z as u32) >= self.size[2] as u32
-        {
+        if (x as u32) >= self.size[0] as u32 || (y as u32) >= self.size[1] as u32 || (z as u32) >= self.size[2] as u32 {
             return None;
         }
-        let v = self.slots[((z * self.size[1] + y) * self.size[0] + x) as usize];
+        Some(((z * self.size[1] + y) * self.size[0] + x) as usize)
+    }
+
+    #[inline]
+    fn get(&self, p: Point) -> Option<u32> {
+        let v = self.slots[self.slot(p)?];
         (v != NONE).then_some(v)
     }
 }
@@ -122,6 +125,14 @@ impl Shape {
         self.points[i as usize]
     }
 
+    /// Every cell's point under every symmetry, as a linear address:
+    /// entry `s * len() + c` addresses `syms[s] · point(c)`.
+    pub(crate) fn moved(&self, syms: &[crate::lattice::Symmetry], layout: &Layout) -> Vec<i64> {
+        syms.iter()
+            .flat_map(|g| self.points.iter().map(move |p| layout.linear(g.apply(*p))))
+            .collect()
+    }
+
     /// The neighbours of cell `i` inside the shape.
     #[inline]
     pub(crate) fn neighbors(&self, i: u32) -> &[u32] {
@@ -132,5 +143,81 @@ impl Shape {
     #[inline]
     pub(crate) fn lookup(&self, p: Point) -> Option<u32> {
         self.grid.get(p)
+    }
+
+    /// The smallest and largest point coordinates.
+    pub(crate) fn point_box(&self) -> (Point, Point) {
+        let mut lo = [i32::MAX; 3];
+        let mut hi = [i32::MIN; 3];
+        for p in &self.points {
+            for d in 0..3 {
+                lo[d] = lo[d].min(p[d]);
+                hi[d] = hi[d].max(p[d]);
+            }
+        }
+        (lo, hi)
+    }
+}
+
+/// A linear addressing of points shared by all shapes of a problem, with
+/// every shape's box padded so that any piece of any shape, moved onto a
+/// piece of this shape by centroid alignment, lands inside the padded box.
+/// The distance's inner loop then costs one add and one load per cell.
+#[derive(Clone, Debug)]
+pub(crate) struct Layout {
+    stride: [i64; 3],
+    len: usize,
+    /// Per shape: the linear index of its padded box's low corner.
+    origin: Vec<i64>,
+}
+
+impl Layout {
+    /// The layout for these shapes; translations are multiples of `modulus`.
+    pub(crate) fn new(shapes: &[Shape], modulus: i32) -> Layout {
+        let boxes: Vec<(Point, Point)> = shapes.iter().map(|s| s.point_box()).collect();
+        let mut ext = [0i64; 3];
+        for (lo, hi) in &boxes {
+            for d in 0..3 {
+                ext[d] = ext[d].max((hi[d] - lo[d]) as i64);
+            }
+        }
+        // Room for the largest piece around any centroid, plus rounding.
+        let pad: Vec<i64> = ext.iter().map(|e| if *e == 0 { 0 } else { e + modulus as i64 + 2 }).collect();
+        let mut size = [1i64; 3];
+        for (lo, hi) in &boxes {
+            for d in 0..3 {
+                size[d] = size[d].max((hi[d] - lo[d]) as i64 + 1 + 2 * pad[d]);
+            }
+        }
+        let stride = [1, size[0], size[0] * size[1]];
+        let origin = boxes
+            .iter()
+            .map(|(lo, _)| (0..3).map(|d| (lo[d] as i64 - pad[d]) * stride[d]).sum())
+            .collect();
+        Layout {
+            stride,
+            len: (size[0] * size[1] * size[2]) as usize,
+            origin,
+        }
+    }
+
+    /// The linear address of a point (or of a translation).
+    #[inline]
+    pub(crate) fn linear(&self, p: Point) -> i64 {
+        p[0] as i64 * self.stride[0] + p[1] as i64 * self.stride[1] + p[2] as i64 * self.stride[2]
+    }
+
+    /// The linear address of shape `f`'s padded box.
+    pub(crate) fn origin(&self, f: usize) -> i64 {
+        self.origin[f]
+    }
+
+    /// Labels of shape `f` by address: `label + 1` on its cells, 0 elsewhere.
+    pub(crate) fn label_grid(&self, f: usize, shape: &Shape, labels: &[u16]) -> Vec<u16> {
+        let mut grid = vec![0u16; self.len];
+        for (c, p) in shape.points.iter().enumerate() {
+            grid[(self.linear(*p) - self.origin[f]) as usize] = labels[c].wrapping_add(1);
+        }
+        grid
     }
 }
