@@ -245,8 +245,9 @@ pub fn growth_exponent(c1: usize, t1: Duration, c2: usize, t2: Duration) -> Opti
     Some((t2 / t1).ln() / (c2 as f64 / c1 as f64).ln())
 }
 
-/// The scaling table: one row per factor, with the growth exponent of the
-/// median time to the first valid dissection against the previous row.
+/// The scaling table: one row per factor, with the growth exponents
+/// against the previous row of the median wall time to the first valid
+/// dissection and of the median CPU time (when every run found one).
 pub fn scale_table(steps: &[ScaleStep], style: Style) -> String {
     let headers = [
         "k",
@@ -255,22 +256,36 @@ pub fn scale_table(steps: &[ScaleStep], style: Style) -> String {
         "first valid s med / worst",
         "total s med / worst",
         "CPU s (med)",
-        "exponent vs previous k",
+        "growth exponent vs previous k (wall / CPU)",
     ];
     let median_first = |s: &ScaleStep| {
         median_worst(&s.runs.iter().map(|r| r.first_valid).collect::<Vec<_>>()).and_then(|(m, _)| m)
+    };
+    // The CPU time of a run that found nothing says nothing about growth.
+    let median_cpu_found = |s: &ScaleStep| {
+        if s.runs.iter().any(|r| r.pieces.is_none()) {
+            return None;
+        }
+        median_f64(s.runs.iter().filter_map(|r| r.cpu).map(|d| d.as_secs_f64()))
+            .map(Duration::from_secs_f64)
     };
     let rows: Vec<Vec<String>> = steps
         .iter()
         .enumerate()
         .map(|(i, s)| {
-            let exponent = i
-                .checked_sub(1)
-                .and_then(|p| {
-                    let prev = &steps[p];
-                    growth_exponent(prev.cells, median_first(prev)?, s.cells, median_first(s)?)
-                })
-                .map_or("-".to_string(), |e| format!("{e:.2}"));
+            let exponent = |time: &dyn Fn(&ScaleStep) -> Option<Duration>| {
+                i.checked_sub(1)
+                    .and_then(|p| {
+                        let prev = &steps[p];
+                        growth_exponent(prev.cells, time(prev)?, s.cells, time(s)?)
+                    })
+                    .map_or("-".to_string(), |e| format!("{e:.2}"))
+            };
+            let exponent = format!(
+                "{} / {}",
+                exponent(&median_first),
+                exponent(&median_cpu_found)
+            );
             let errors = s.runs.iter().filter(|r| r.is_error()).count();
             let pieces = pair(
                 median_worst(&s.runs.iter().map(|r| r.pieces).collect::<Vec<_>>()),
