@@ -55,6 +55,17 @@ pub struct Options {
     /// Run every exploration of the final level even after a valid one is
     /// found (to pick the least area variance among more solutions).
     pub full_levels: bool,
+    /// Extra rounds of `explorations` a level gets when its best candidate
+    /// is a near miss (see [`Options::near_miss`]); 0 is the paper's schedule.
+    pub extra_rounds: usize,
+}
+
+impl Options {
+    /// The largest matching cost `E_M` that counts as a near miss: one
+    /// misplaced cell (cost 2) per figure pair per 150 cells.
+    pub fn near_miss(&self, figures: usize, cells: usize) -> u64 {
+        (2 * (figures.max(2) - 1) * cells.div_ceil(150).max(1)) as u64
+    }
 }
 
 impl Default for Options {
@@ -72,6 +83,7 @@ impl Default for Options {
             split_tries: 4,
             batch: 16,
             full_levels: false,
+            extra_rounds: 1,
         }
     }
 }
@@ -352,9 +364,11 @@ pub fn solve(
         };
         let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(n);
         let batch = options.batch.max(1);
+        let near_miss = options.near_miss(figures.len(), cells);
         let mut start = 0;
-        while start < n {
-            let end = (start + batch).min(n);
+        let mut planned = n;
+        while start < planned {
+            let end = (start + batch).min(planned);
             let chunk: Vec<(Candidate, Score)> =
                 pool.install(|| (start..end).into_par_iter().map(run_one).collect());
             results.extend(chunk);
@@ -365,6 +379,24 @@ pub fn solve(
             }
             if !options.full_levels && results.iter().any(|(_, s)| s.valid) {
                 break;
+            }
+            // A level that ends a near miss gets more rounds of explorations
+            // (new streams, same parents) before the next level is tried.
+            let best_mismatch = results
+                .iter()
+                .map(|(_, s)| s.mismatch)
+                .min()
+                .unwrap_or(u64::MAX);
+            if start == planned
+                && planned < n * (1 + options.extra_rounds)
+                && best_mismatch <= near_miss
+            {
+                planned += n;
+                observer.on_event(&Event::LevelStarted {
+                    level,
+                    pieces,
+                    explorations: planned,
+                });
             }
         }
         total_explorations += results.len();
