@@ -24,6 +24,10 @@ pub enum Command {
     Verify(VerifyArgs),
     /// Print each figure's cell count, components, holes and bounding box.
     Info(InfoArgs),
+    /// Prove a lower bound on the number of pieces (last line: "lower bound: K (reason)").
+    Bound(crate::prove::BoundArgs),
+    /// Serve the browser studio (figure editor, solver, downloads) on 127.0.0.1.
+    Serve(crate::serve::ServeArgs),
 }
 
 fn lattice(s: &str) -> Result<LatticeKind, String> {
@@ -72,6 +76,15 @@ pub struct SolveArgs {
     /// Run the whole final level to pick the least area variance among more solutions.
     #[arg(long)]
     pub full_level: bool,
+    /// Extra rounds of explorations for a level whose best candidate is a near miss (0: the paper's schedule).
+    #[arg(long, default_value_t = 1, value_name = "N")]
+    pub extra_rounds: usize,
+    /// Also prove a lower bound by SAT beside the search, and say whether the result is optimal.
+    #[arg(long)]
+    pub prove: bool,
+    /// Find a minimum dissection by SAT alone (small figures).
+    #[arg(long)]
+    pub exact: bool,
     /// Write the solution JSON here.
     #[arg(short = 'o', long = "output", value_name = "OUT.json")]
     pub output: Option<PathBuf>,

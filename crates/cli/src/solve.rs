@@ -5,7 +5,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Condvar, Mutex};
 use std::time::{Duration, Instant};
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use dissect_core::io::Dissection;
 use dissect_core::solver::{solve, Options};
 use serde_json::{json, Map, Value};
@@ -16,8 +16,13 @@ use crate::{input, InputError, Status};
 
 /// Raised by the time limit and by Ctrl-C.
 static STOP: AtomicBool = AtomicBool::new(false);
+/// Raised by Ctrl-C (SIGINT, or SIGTERM) only.
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 
 pub fn run(args: SolveArgs) -> Result<Status> {
+    if args.prove || args.exact {
+        return crate::prove::solve_exact(args);
+    }
     let figures = input::figures(&args.figures, args.lattice)?;
     input::check_equal_areas(&args.figures, &figures)?;
     if let Some(t) = args.time_limit {
@@ -35,6 +40,9 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         ))
         .into());
     }
+    if let Some(out) = &args.output {
+        input::check_writable(out)?;
+    }
     let lattice = args.lattice.lattice();
     let mirror = !args.no_mirror && lattice.supports_mirror();
     let options = Options {
@@ -49,12 +57,14 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         split_penalty: args.split_penalty,
         split_tries: args.split_tries,
         full_levels: args.full_level,
+        extra_rounds: args.extra_rounds,
         ..Options::default()
     };
 
     // Ctrl-C: the first stops the search (the best result is kept), a
     // second one exits at once.
     let _ = ctrlc::set_handler(|| {
+        INTERRUPTED.store(true, Ordering::SeqCst);
         if STOP.swap(true, Ordering::SeqCst) {
             std::process::exit(130);
         }
@@ -93,15 +103,22 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     let elapsed = start.elapsed().as_secs_f64();
 
     let Some(found) = outcome.found else {
-        let why = if outcome.stopped {
-            "the search was stopped (time limit or Ctrl-C)"
+        let why = if INTERRUPTED.load(Ordering::SeqCst) {
+            "interrupted (Ctrl-C)".to_string()
+        } else if outcome.stopped {
+            format!(
+                "the time limit of {} s was reached",
+                args.time_limit.unwrap_or_default()
+            )
         } else {
-            "--max-pieces was reached"
+            match args.max_pieces {
+                Some(k) => format!("--max-pieces {k} was reached"),
+                None => "every piece count was tried".to_string(),
+            }
         };
         eprintln!(
-            "no dissection found: {why} after {:.1} s; the best candidate with {} pieces had matching score E_M = {}",
-            elapsed,
-            outcome.last_pieces,
+            "no dissection found: {why} after {elapsed:.1} s; the best candidate ({}) had matching score E_M = {}",
+            plural(outcome.last_pieces, "piece"),
             outcome.best_mismatch.map_or("n/a".to_string(), |m| m.to_string()),
         );
         return Ok(Status::NotFound);
@@ -141,13 +158,15 @@ pub fn run(args: SolveArgs) -> Result<Status> {
             .enumerate()
             .map(|(i, a)| format!("{}={a}", dissect_core::ascii::piece_letter(i)))
             .collect();
-        println!("{} pieces", found.piece_count());
+        println!("{}", plural(found.piece_count(), "piece"));
         println!("piece areas: {}", list.join(" "));
         println!("area variance: {:.2}", found.variance);
         println!(
             "time: {elapsed:.2} s{}",
-            if outcome.stopped {
-                " (stopped early; best found so far)"
+            if INTERRUPTED.load(Ordering::SeqCst) {
+                " (interrupted; best found so far)"
+            } else if outcome.stopped {
+                " (time limit reached; best found so far)"
             } else {
                 ""
             }
@@ -165,7 +184,20 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         extra.insert("explorations".into(), json!(outcome.explorations));
         extra.insert("stopped_early".into(), Value::Bool(outcome.stopped));
         let text = dissection.to_file(extra).to_json();
-        std::fs::write(out, text).with_context(|| format!("cannot write {}", out.display()))?;
+        if let Err(e) = std::fs::write(out, &text) {
+            // The run is not lost: the solution goes to stdout instead.
+            print!("{text}");
+            return Err(InputError(format!(
+                "{}: cannot write: {e} (the solution was printed on stdout instead)",
+                out.display()
+            ))
+            .into());
+        }
     }
     Ok(Status::Ok)
+}
+
+/// `1 piece`, `2 pieces`.
+fn plural(n: usize, word: &str) -> String {
+    format!("{n} {word}{}", if n == 1 { "" } else { "s" })
 }
