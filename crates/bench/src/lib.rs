@@ -164,6 +164,7 @@ impl Plan {
             reference: instance.reference,
             paper,
             time_limit: self.time_limit(&figures),
+            target: paper::target_seconds(&instance.name),
             runs,
         })
     }

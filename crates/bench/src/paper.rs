@@ -38,3 +38,25 @@ pub fn paper_result(name: &str) -> Option<PaperResult> {
         time,
     })
 }
+
+/// Our own target for an instance (from the project's issues): the median
+/// time to the first valid dissection at the reference piece count, on the
+/// 2-core machine, in seconds.
+pub fn target_seconds(name: &str) -> Option<f64> {
+    match name {
+        // Issue 3: every square instance at its reference count, median < 10 s.
+        "rect10x7-hole-to-square8"
+        | "rect15x10-hole-to-square12"
+        | "squares-3-4-split-to-5"
+        | "squares-12-5-joined-to-13"
+        | "squares-6-6-7-split-to-11"
+        | "sierpinski9-to-square8" => Some(10.0),
+        // Issue 4.
+        "tri-triangle8-to-rect4x8" => Some(10.0),
+        "cube4-cavity-to-7x4x2" => Some(30.0),
+        "cubes-3-4-5-to-6" => Some(300.0),
+        // Issue 5: 6 pieces in under 60 s median.
+        "three-square12-rect16x12cross-rect16x9" => Some(60.0),
+        _ => None,
+    }
+}

@@ -29,6 +29,9 @@ pub struct InstanceResult {
     pub paper: Option<PaperResult>,
     /// The time limit of each run.
     pub time_limit: Option<Duration>,
+    /// Our target for the median time to the first valid dissection at the
+    /// reference piece count, in seconds.
+    pub target: Option<f64>,
     /// One run per seed.
     pub runs: Vec<SeedRun>,
 }
@@ -126,6 +129,29 @@ impl InstanceResult {
         )
     }
 
+    /// Whether the target is met: the median run reaches the reference
+    /// piece count and its time to the first valid dissection is under the
+    /// target. `"< 10 s: met"`, `"< 10 s: missed"` or `"-"`.
+    pub fn target_verdict(&self) -> String {
+        let Some(target) = self.target else {
+            return "-".to_string();
+        };
+        let pieces_ok = match (self.reference, self.pieces()) {
+            (Some(r), Some((Some(p), _))) => p <= r,
+            _ => false,
+        };
+        let time_ok = matches!(
+            self.first_valid(),
+            Some((Some(t), _)) if t.as_secs_f64() < target
+        );
+        let verdict = if pieces_ok && time_ok && !self.has_error() {
+            "met"
+        } else {
+            "missed"
+        };
+        format!("< {target} s: {verdict}")
+    }
+
     /// Whether any run failed verification or could not run.
     pub fn has_error(&self) -> bool {
         self.runs.iter().any(SeedRun::is_error)
@@ -147,6 +173,7 @@ pub fn suite_table(results: &[InstanceResult], style: Style) -> String {
         "CPU s (med)",
         "area var (med)",
         "reached ref",
+        "target",
     ];
     let rows: Vec<Vec<String>> = results
         .iter()
@@ -176,6 +203,7 @@ pub fn suite_table(results: &[InstanceResult], style: Style) -> String {
                 median_f64(r.runs.iter().filter_map(|s| s.variance))
                     .map_or("-".to_string(), |v| format!("{v:.1}")),
                 reached,
+                r.target_verdict(),
             ]
         })
         .collect();

@@ -364,6 +364,7 @@ fn sample_results() -> Vec<InstanceResult> {
             reference: Some(2),
             paper: paper_result("rect10x7-hole-to-square8"),
             time_limit: Some(Duration::from_secs(300)),
+            target: Some(10.0),
             runs: vec![
                 seed_run(1, Some(2), Some(40), 40),
                 seed_run(2, Some(2), Some(25), 31),
@@ -378,6 +379,7 @@ fn sample_results() -> Vec<InstanceResult> {
             reference: Some(6),
             paper: paper_result("three-square12-rect16x12cross-rect16x9"),
             time_limit: Some(Duration::from_secs(300)),
+            target: Some(60.0),
             runs: vec![seed_run(1, None, None, 300_000), broken],
         },
         InstanceResult {
@@ -388,6 +390,7 @@ fn sample_results() -> Vec<InstanceResult> {
             reference: None,
             paper: paper_result("cubes-3-4-5-joined-to-6"),
             time_limit: Some(Duration::from_secs(600)),
+            target: None,
             runs: vec![seed_run(1, Some(7), Some(123_456), 123_456)],
         },
     ]
@@ -411,6 +414,27 @@ fn sample_steps() -> Vec<ScaleStep> {
             runs: vec![seed_run(1, None, None, 60_000)],
         },
     ]
+}
+
+#[test]
+fn the_target_needs_the_reference_count_and_the_time_at_the_median() {
+    let mut r = sample_results();
+    assert_eq!(r[0].target_verdict(), "< 10 s: met");
+    assert_eq!(r[1].target_verdict(), "< 60 s: missed");
+    assert_eq!(r[2].target_verdict(), "-");
+    // Too slow at the median.
+    r[0].runs[1].first_valid = Some(Duration::from_secs(11));
+    assert_eq!(
+        r[0].target_verdict(),
+        "< 10 s: met",
+        "one slow seed of three"
+    );
+    r[0].runs[0].first_valid = Some(Duration::from_secs(11));
+    assert_eq!(r[0].target_verdict(), "< 10 s: missed");
+    // Fast, but one piece too many at the median.
+    let mut r = sample_results();
+    r[0].runs[0].pieces = Some(3);
+    assert_eq!(r[0].target_verdict(), "< 10 s: missed");
 }
 
 /// Compares `got` with `tests/golden/<name>`; `BLESS=1` rewrites it.
