@@ -30,10 +30,12 @@ struct Args {
         value_name = "N,..."
     )]
     seeds: Vec<u64>,
-    /// Time limit per run in seconds (0: none).
-    #[arg(long, default_value_t = 300.0, value_name = "SECS")]
-    time_limit: f64,
-    /// Time limit per run on `cubic` instances (default: --time-limit).
+    /// Time limit per run in seconds (0: none) [default: 300 on 2D
+    /// lattices, 600 on cubic].
+    #[arg(long, value_name = "SECS")]
+    time_limit: Option<f64>,
+    /// Time limit per run on `cubic` instances [default: --time-limit if
+    /// given, else 600].
     #[arg(long, value_name = "SECS")]
     time_limit_3d: Option<f64>,
     /// Run only these instances (manifest names).
@@ -218,9 +220,9 @@ fn plan(args: &Args) -> Result<Plan> {
     Ok(Plan {
         seeds: args.seeds.clone(),
         options,
-        time_limit_2d: limit(args.time_limit, "--time-limit")?,
+        time_limit_2d: limit(args.time_limit.unwrap_or(300.0), "--time-limit")?,
         time_limit_3d: limit(
-            args.time_limit_3d.unwrap_or(args.time_limit),
+            args.time_limit_3d.or(args.time_limit).unwrap_or(600.0),
             "--time-limit-3d",
         )?,
     })
