@@ -1,0 +1,260 @@
+// End-to-end tests of the studio page in Debian's headless chromium.
+//
+// Needs a running `dissect serve` (DISSECT_URL), the independent checker
+// (DISSECT_VERIFY = path of shared/tools/verify.py) and a folder for the
+// screenshots (DISSECT_DOCS). .ci/steps/50-web-e2e.sh sets all three.
+
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+
+const URL = process.env.DISSECT_URL;
+const VERIFY = process.env.DISSECT_VERIFY;
+const DOCS = process.env.DISSECT_DOCS;
+assert.ok(URL && VERIFY && DOCS, 'set DISSECT_URL, DISSECT_VERIFY and DISSECT_DOCS');
+
+let context;
+let page;
+let profile;
+let downloads;
+const pageErrors = [];
+
+before(async () => {
+  profile = fs.mkdtempSync(path.join(os.tmpdir(), 'dissect-chromium-'));
+  downloads = fs.mkdtempSync(path.join(os.tmpdir(), 'dissect-downloads-'));
+  context = await chromium.launchPersistentContext(profile, {
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    acceptDownloads: true,
+    viewport: { width: 1280, height: 860 },
+    args: [
+      '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync',
+      `--user-data-dir=${profile}`,
+    ],
+  });
+  page = await context.newPage();
+  page.on('pageerror', (e) => pageErrors.push(e.message));
+  page.setDefaultTimeout(20_000);
+});
+
+after(async () => {
+  await context?.close();
+  fs.rmSync(profile, { recursive: true, force: true });
+  fs.rmSync(downloads, { recursive: true, force: true });
+});
+
+async function open() {
+  await page.goto(URL);
+  await page.waitForSelector('body[data-ready=true]');
+}
+
+const card = (i) => page.locator('#figures .card').nth(i);
+const count = (i) => card(i).locator('[data-testid=count]');
+
+/** Page coordinates of the centre of cell (x, y) of figure i's editor (dx, dy: offset inside the cell, 0..1). */
+async function cellPoint(i, x, y, dx = 0.5, dy = 0.5) {
+  const box = await card(i).locator('canvas.grid').boundingBox();
+  const fig = await page.evaluate((j) => ({ w: window.studio.figures[j].w, h: window.studio.figures[j].h }), i);
+  const cs = (box.width - 1) / fig.w;
+  return [box.x + (x + dx) * cs, box.y + (y + dy) * cs];
+}
+
+async function drag(i, from, to) {
+  const [x0, y0] = await cellPoint(i, ...from);
+  const [x1, y1] = await cellPoint(i, ...to);
+  await page.mouse.move(x0, y0);
+  await page.mouse.down();
+  await page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, { steps: 4 });
+  await page.mouse.move(x1, y1, { steps: 4 });
+  await page.mouse.up();
+}
+
+async function click(i, x, y, dx, dy) {
+  const [px, py] = await cellPoint(i, x, y, dx, dy);
+  await page.mouse.click(px, py);
+}
+
+async function tool(name) {
+  await page.click(`.tool[data-tool=${name}]`);
+}
+
+async function setSize(i, w, h) {
+  await card(i).locator('input.w').fill(String(w));
+  await card(i).locator('input.w').dispatchEvent('change');
+  await card(i).locator('input.h').fill(String(h));
+  await card(i).locator('input.h').dispatchEvent('change');
+}
+
+async function saveDownload(trigger) {
+  const [dl] = await Promise.all([page.waitForEvent('download'), trigger()]);
+  const file = path.join(downloads, dl.suggestedFilename());
+  await dl.saveAs(file);
+  return file;
+}
+
+/** The distinct piece colours painted on a solved canvas. */
+async function coloursOn(testid) {
+  return page.evaluate((id) => {
+    const c = document.querySelector(`canvas[data-testid="${id}"]`);
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const seen = new Set();
+    for (let p = 0; p < d.length; p += 4) {
+      if (d[p + 3] < 255) continue;
+      const hex = '#' + [d[p], d[p + 1], d[p + 2]].map((v) => v.toString(16).padStart(2, '0')).join('');
+      seen.add(hex);
+    }
+    const palette = new Set(window.studioPalette);
+    return [...seen].filter((h) => palette.has(h));
+  }, testid);
+}
+
+async function solveAndWait(timeLimit) {
+  await page.fill('#opt-time', String(timeLimit));
+  await page.click('[data-testid=solve]');
+  await page.waitForSelector('#progress:not([hidden])');
+  await page.waitForSelector('#result:not([hidden])', { timeout: (timeLimit + 15) * 1000 });
+}
+
+test('draw two figures, see the counts, solve, check the downloaded solution', async () => {
+  await open();
+  assert.match(await page.textContent('[data-testid=areas]'), /Draw your figures/);
+
+  // Figure a: a 4x3 rectangle with the rectangle tool.
+  await tool('rect');
+  await drag(0, [0, 0], [3, 2]);
+  assert.equal(await count(0).textContent(), '12 cells');
+
+  // Figure b: a 6x2 grid flood-filled, then one cell erased with the pen.
+  await setSize(1, 6, 2);
+  await tool('fill');
+  await click(1, 2, 1);
+  assert.equal(await count(1).textContent(), '12 cells');
+  await tool('pen');
+  await click(1, 5, 1);
+  assert.equal(await count(1).textContent(), '11 cells (−1)');
+  const areas = await page.textContent('[data-testid=areas]');
+  assert.match(areas, /Areas differ by 1 cells/);
+  assert.match(areas, /figure-b\.txt needs 1 more/);
+  assert.ok(await page.isDisabled('[data-testid=solve]'), 'Solve is off while areas differ');
+  await page.screenshot({ path: path.join(DOCS, 'studio-editor.png') });
+
+  // Undo brings the cell back, redo removes it, undo again.
+  await page.click('[data-testid=undo]');
+  assert.equal(await count(1).textContent(), '12 cells');
+  await page.click('[data-testid=redo]');
+  assert.equal(await count(1).textContent(), '11 cells (−1)');
+  await page.keyboard.press('Control+z');
+  assert.equal(await count(1).textContent(), '12 cells');
+  assert.match(await page.textContent('[data-testid=areas]'), /Equal areas: every figure has 12 cells/);
+
+  // A pen drag on figure a adds a row of cells, the eraser takes it away.
+  await drag(0, [0, 4], [3, 4]);
+  assert.equal(await count(0).textContent(), '16 cells');
+  await tool('erase');
+  await drag(0, [0, 4], [3, 4]);
+  assert.equal(await count(0).textContent(), '12 cells');
+
+  await solveAndWait(20);
+  const summary = await page.textContent('[data-testid=result-summary]');
+  const pieces = Number(/^(\d+) pieces/.exec(summary)[1]);
+  assert.ok(pieces >= 2 && pieces <= 12, summary);
+  assert.match(summary, /area variance \d/);
+  // Both figures are drawn with the same piece colours.
+  const c0 = await coloursOn('solved-0');
+  const c1 = await coloursOn('solved-1');
+  assert.equal(c0.length, pieces, `figure a shows ${c0} for ${pieces} pieces`);
+  assert.deepEqual([...c1].sort(), [...c0].sort());
+
+  // The solution JSON and the figures, checked by the independent verifier.
+  const json = await saveDownload(() => page.click('[data-testid=download-json]'));
+  const a = await saveDownload(() => card(0).locator('button.save').click());
+  const b = await saveDownload(() => card(1).locator('button.save').click());
+  const solution = JSON.parse(fs.readFileSync(json, 'utf8'));
+  assert.equal(solution.format, 'dissection-solution/1');
+  assert.equal(solution.figures[0].pieces.length, pieces);
+  const out = execFileSync('python3', [VERIFY, '--lattice', 'square', '--solution', json, a, b], { encoding: 'utf8' });
+  assert.match(out, new RegExp(`valid: ${pieces} pieces`));
+});
+
+test('a shipped example solves with live progress; hovering a piece highlights it everywhere', async () => {
+  await open();
+  await page.selectOption('[data-testid=example]', 'squares-3-4-to-5');
+  await page.waitForFunction(() => window.studio.figures.length === 2 && window.studio.figures[1].cells.size === 25);
+  assert.match(await page.textContent('[data-testid=areas]'), /every figure has 25 cells/);
+  await solveAndWait(30);
+  // Progress was shown: a level and an elapsed time.
+  assert.match(await page.textContent('#p-level'), /\d+ \(\d+ pieces\)/);
+  assert.match(await page.textContent('#p-elapsed'), /\d+\.\d s/);
+  const summary = await page.textContent('[data-testid=result-summary]');
+  const pieces = Number(/^(\d+) pieces/.exec(summary)[1]);
+  assert.ok(pieces >= 4, summary);
+
+  // Hover the top-left cell of the first figure: its piece is highlighted
+  // (the legend entry and the same piece in the other figure).
+  const box = await page.locator('canvas[data-testid=solved-0]').boundingBox();
+  await page.mouse.move(box.x + 6, box.y + 6);
+  await page.waitForFunction(() => window.studio.hot >= 0);
+  const hot = await page.evaluate(() => window.studio.hot);
+  assert.equal(await page.locator('#legend span.hot').count(), 1);
+  assert.equal(await page.getAttribute('#legend span.hot', 'data-piece'), String(hot));
+  await page.locator('#result').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(DOCS, 'studio-solved.png'), fullPage: true });
+
+  const json = await saveDownload(() => page.click('[data-testid=download-json]'));
+  const figs = [];
+  for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
+  const out = execFileSync('python3', [VERIFY, '--lattice', 'square', '--solution', json, ...figs], { encoding: 'utf8' });
+  assert.match(out, new RegExp(`valid: ${pieces} pieces`));
+});
+
+test('tri4: a click fills the triangle under the mouse', async () => {
+  await open();
+  await page.selectOption('[data-testid=lattice]', 'tri4');
+  await tool('pen');
+  await click(0, 1, 1, 0.5, 0.15); // top triangle of square (1, 1)
+  await click(0, 2, 1, 0.85, 0.5); // right triangle of square (2, 1)
+  assert.equal(await count(0).textContent(), '2 cells');
+  const cells = await page.evaluate(() => [...window.studio.figures[0].cells].sort());
+  assert.deepEqual(cells, ['1,1,0', '2,1,1']);
+  await tool('rect');
+  await drag(1, [0, 0], [1, 0]);
+  assert.equal(await count(1).textContent(), '8 cells');
+});
+
+test('cubic: layers are edited apart; Stop ends a solve and keeps what was found', async () => {
+  await open();
+  await page.selectOption('[data-testid=lattice]', 'cubic');
+  await setSize(0, 2, 2);
+  await card(0).locator('input.d').fill('2');
+  await card(0).locator('input.d').dispatchEvent('change');
+  await tool('fill');
+  await click(0, 0, 0); // layer z0: 4 cubes
+  await card(0).locator('.layers button', { hasText: 'z1' }).click();
+  await click(0, 0, 0); // layer z1: 4 more
+  assert.equal(await count(0).textContent(), '8 cells');
+  const zs = await page.evaluate(() => [...new Set([...window.studio.figures[0].cells].map((k) => k.split(',')[2]))].sort());
+  assert.deepEqual(zs, ['0', '1']);
+
+  // Stop: a larger example with a long time limit, stopped at the first progress.
+  await page.selectOption('[data-testid=example]', 'rect10x7-hole-to-square8');
+  await page.waitForFunction(() => window.studio.lattice === 'square' && window.studio.figures[0].cells.size === 64);
+  await page.fill('#opt-time', '120');
+  await page.fill('#opt-seed', '3');
+  const t0 = Date.now();
+  await page.click('[data-testid=solve]');
+  await page.waitForSelector('[data-testid=stop]:not([disabled])');
+  await page.click('[data-testid=stop]');
+  await page.waitForSelector('[data-testid=solve]:not([disabled])', { timeout: 60_000 });
+  assert.ok(Date.now() - t0 < 60_000, 'stopped well before the time limit');
+  assert.equal(await page.textContent('#p-state'), 'done');
+  // Either a dissection (shown) or a clear message that none was found yet.
+  const shown = await page.isVisible('#result');
+  const message = await page.textContent('#message');
+  assert.ok(shown || /No dissection found before the stop/.test(message), message);
+  assert.deepEqual(pageErrors, []);
+});

@@ -1,0 +1,134 @@
+//! API errors: every failure leaves the server as an HTTP status with a JSON
+//! body `{"error": {"code": "...", "message": "..."}}` (plus `details` where
+//! it helps, e.g. each figure's cell count).
+
+use axum::http::StatusCode;
+use axum::response::{IntoResponse, Response};
+use serde_json::{json, Value};
+
+/// Occurs when a request cannot be served.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ApiError {
+    /// Occurs when the body is not JSON, or not JSON of the expected shape.
+    #[error("invalid JSON at line {line}, column {column}: {message}")]
+    BadJson {
+        /// 1-based line of the body.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// What serde said.
+        message: String,
+    },
+    /// Occurs when a lattice name is not `square`, `tri4` or `cubic`.
+    #[error("{0}")]
+    UnknownLattice(String),
+    /// Occurs when a field has a value out of its range (a negative seed, a
+    /// NaN area weight, a cell of the wrong form, ...).
+    #[error("{0}")]
+    BadValue(String),
+    /// Occurs when a figure (file text or cell list) is not a valid figure;
+    /// the message names the figure (and line/column for texts).
+    #[error("{0}")]
+    BadFigure(String),
+    /// Occurs when the figures do not have equal areas.
+    #[error("figures have different areas: {}", list(.0))]
+    UnequalAreas(Vec<(String, usize)>),
+    /// Occurs when a request is larger than the server's limits.
+    #[error("{0}")]
+    TooLarge(String),
+    /// Occurs when the server is already running as many solves as allowed.
+    #[error("{0} solve(s) are already running; stop one or try again later")]
+    Busy(usize),
+    /// Occurs when a path names no route or no solve.
+    #[error("{0}")]
+    NotFound(String),
+    /// Occurs when a route exists but not for this HTTP method.
+    #[error("method not allowed here")]
+    MethodNotAllowed,
+    /// Occurs on a failure that is the server's own fault.
+    #[error("internal error: {0}")]
+    Internal(String),
+}
+
+fn list(areas: &[(String, usize)]) -> String {
+    areas
+        .iter()
+        .map(|(n, a)| format!("{n}: {a} cells"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+impl ApiError {
+    /// The HTTP status.
+    pub fn status(&self) -> StatusCode {
+        match self {
+            ApiError::BadJson { .. } | ApiError::UnknownLattice(_) | ApiError::BadValue(_) => {
+                StatusCode::BAD_REQUEST
+            }
+            ApiError::BadFigure(_) | ApiError::UnequalAreas(_) => StatusCode::UNPROCESSABLE_ENTITY,
+            ApiError::TooLarge(_) => StatusCode::PAYLOAD_TOO_LARGE,
+            ApiError::Busy(_) => StatusCode::TOO_MANY_REQUESTS,
+            ApiError::NotFound(_) => StatusCode::NOT_FOUND,
+            ApiError::MethodNotAllowed => StatusCode::METHOD_NOT_ALLOWED,
+            ApiError::Internal(_) => StatusCode::INTERNAL_SERVER_ERROR,
+        }
+    }
+
+    /// A short machine-readable code.
+    pub fn code(&self) -> &'static str {
+        match self {
+            ApiError::BadJson { .. } => "bad_json",
+            ApiError::UnknownLattice(_) => "unknown_lattice",
+            ApiError::BadValue(_) => "bad_value",
+            ApiError::BadFigure(_) => "bad_figure",
+            ApiError::UnequalAreas(_) => "unequal_areas",
+            ApiError::TooLarge(_) => "too_large",
+            ApiError::Busy(_) => "busy",
+            ApiError::NotFound(_) => "not_found",
+            ApiError::MethodNotAllowed => "method_not_allowed",
+            ApiError::Internal(_) => "internal",
+        }
+    }
+
+    /// The JSON body.
+    pub fn body(&self) -> Value {
+        let mut err = json!({"code": self.code(), "message": self.to_string()});
+        match self {
+            ApiError::UnequalAreas(a) => {
+                let max = a.iter().map(|x| x.1).max().unwrap_or(0);
+                err["details"] = json!({
+                    "areas": a.iter().map(|(n, c)| json!({"name": n, "cells": c, "short_by": max - c})).collect::<Vec<_>>()
+                });
+            }
+            ApiError::BadJson { line, column, .. } => {
+                err["details"] = json!({"line": line, "column": column});
+            }
+            _ => {}
+        }
+        json!({ "error": err })
+    }
+
+    /// The error of a body that serde could not read.
+    pub fn from_json(e: &serde_json::Error) -> ApiError {
+        ApiError::BadJson {
+            line: e.line(),
+            column: e.column(),
+            message: strip_position(&e.to_string()),
+        }
+    }
+}
+
+/// serde_json appends " at line L column C": we report those apart.
+fn strip_position(s: &str) -> String {
+    match s.rfind(" at line ") {
+        Some(i) => s[..i].to_string(),
+        None => s.to_string(),
+    }
+}
+
+impl IntoResponse for ApiError {
+    fn into_response(self) -> Response {
+        (self.status(), axum::Json(self.body())).into_response()
+    }
+}

@@ -1,0 +1,325 @@
+//! The HTTP routes: the page, the JSON API and the solve event stream.
+//!
+//! | route | what |
+//! |---|---|
+//! | `GET /` and `GET /<asset>` | the page |
+//! | `GET /api/info` | version, lattices, limits, export formats |
+//! | `GET /api/examples` | the shipped examples with their figure texts |
+//! | `POST /api/figures` | read figures (cells or text): cells, text, counts |
+//! | `POST /api/solve` | start a solve: `202 {"id": ..}` |
+//! | `GET /api/solve/{id}` | its progress and, once done, its result |
+//! | `GET /api/solve/{id}/events` | the same as server-sent events |
+//! | `POST /api/solve/{id}/stop` | stop it; the best dissection so far is kept |
+//!
+//! See `crates/web/openapi.yaml` for the request and response shapes.
+
+use std::convert::Infallible;
+use std::sync::Arc;
+use std::time::Duration;
+
+use axum::body::Bytes;
+use axum::extract::rejection::BytesRejection;
+use axum::extract::{DefaultBodyLimit, Path, State};
+use axum::http::{header, StatusCode, Uri};
+use axum::response::sse::{Event as SseEvent, KeepAlive, Sse};
+use axum::response::{IntoResponse, Response};
+use axum::routing::{get, post};
+use axum::{Json, Router};
+use dissect_core::solver::Options;
+use futures_util::Stream;
+use serde::de::DeserializeOwned;
+use serde::Deserialize;
+use serde_json::{json, Value};
+
+use crate::error::ApiError;
+use crate::figures::{self, FigureInput};
+use crate::jobs::{Job, Jobs, Request, State as JobState};
+use crate::limits::Limits;
+use crate::{assets, examples};
+
+/// The largest request body, in bytes.
+pub const MAX_BODY: usize = 8 * 1024 * 1024;
+
+/// What every handler shares.
+#[derive(Clone)]
+pub struct AppState {
+    pub(crate) limits: Arc<Limits>,
+    pub(crate) jobs: Arc<Jobs>,
+}
+
+impl AppState {
+    /// A fresh state with no job.
+    pub fn new(limits: Limits) -> AppState {
+        AppState {
+            jobs: Arc::new(Jobs::new(limits.max_concurrent_solves())),
+            limits: Arc::new(limits),
+        }
+    }
+}
+
+/// The whole application for the given limits.
+pub fn router(limits: Limits) -> Router {
+    router_with_state(AppState::new(limits))
+}
+
+pub(crate) fn router_with_state(state: AppState) -> Router {
+    Router::new()
+        .route("/api/info", get(info))
+        .route("/api/examples", get(list_examples))
+        .route("/api/figures", post(read_figures))
+        .route("/api/solve", post(start_solve))
+        .route("/api/solve/{id}", get(solve_status))
+        .route("/api/solve/{id}/events", get(solve_events))
+        .route("/api/solve/{id}/stop", post(stop_solve))
+        .fallback(static_or_404)
+        .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
+        .layer(DefaultBodyLimit::max(MAX_BODY))
+        .layer(tower_http::catch_panic::CatchPanicLayer::custom(
+            |_: Box<dyn std::any::Any + Send>| {
+                ApiError::Internal("the request made the server fail".into()).into_response()
+            },
+        ))
+        .with_state(state)
+}
+
+/// Reads a JSON body into `T`, with clear errors for every way it can fail.
+fn parse<T: DeserializeOwned>(body: Result<Bytes, BytesRejection>) -> Result<T, ApiError> {
+    let body = body.map_err(|e| {
+        if e.status() == StatusCode::PAYLOAD_TOO_LARGE {
+            ApiError::TooLarge(format!("request body over {MAX_BODY} bytes"))
+        } else {
+            ApiError::BadValue(format!("cannot read the request body: {e}"))
+        }
+    })?;
+    if body.iter().all(|b| b.is_ascii_whitespace()) {
+        return Err(ApiError::BadJson {
+            line: 1,
+            column: 0,
+            message: "the request body is empty; a JSON object is expected".into(),
+        });
+    }
+    serde_json::from_slice(&body).map_err(|e| ApiError::from_json(&e))
+}
+
+async fn info(State(s): State<AppState>) -> Json<Value> {
+    let l = &s.limits;
+    Json(json!({
+        "name": "dissect",
+        "version": env!("CARGO_PKG_VERSION"),
+        "lattices": ["square", "tri4", "cubic"],
+        "limits": {
+            "max_cells": l.max_cells(),
+            "max_extent": l.max_extent(),
+            "max_figures": l.max_figures(),
+            "max_concurrent_solves": l.max_concurrent_solves(),
+            "max_time_limit": l.max_time_limit(),
+            "max_body_bytes": MAX_BODY,
+        },
+    }))
+}
+
+async fn list_examples() -> Json<Value> {
+    Json(examples::list())
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FiguresRequest {
+    lattice: String,
+    figures: Vec<FigureInput>,
+}
+
+async fn read_figures(
+    State(s): State<AppState>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Json<Value>, ApiError> {
+    let req: FiguresRequest = parse(body)?;
+    let lattice = figures::lattice(&req.lattice)?;
+    let figs = figures::read_all(&req.figures, lattice, &s.limits)?;
+    let counts: Vec<usize> = figs.iter().map(|f| f.len()).collect();
+    let described: Vec<Value> = req
+        .figures
+        .iter()
+        .zip(&figs)
+        .enumerate()
+        .map(|(i, (inp, f))| figures::describe(&figures::name_of(inp, i), f))
+        .collect();
+    Ok(Json(json!({
+        "lattice": lattice.name(),
+        "figures": described,
+        "equal_areas": counts.windows(2).all(|w| w[0] == w[1]),
+    })))
+}
+
+/// The body of `POST /api/solve`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SolveRequest {
+    lattice: String,
+    figures: Vec<FigureInput>,
+    #[serde(default)]
+    mirror: Option<bool>,
+    #[serde(default)]
+    seed: Option<u64>,
+    #[serde(default)]
+    area_weight: Option<f64>,
+    #[serde(default)]
+    time_limit: Option<f64>,
+    #[serde(default)]
+    explorations: Option<usize>,
+    #[serde(default)]
+    max_pieces: Option<usize>,
+}
+
+async fn start_solve(
+    State(s): State<AppState>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Response, ApiError> {
+    let req: SolveRequest = parse(body)?;
+    let lattice = figures::lattice(&req.lattice)?;
+    if req.figures.len() < 2 {
+        return Err(ApiError::BadValue(format!(
+            "a dissection needs at least two figures, got {}",
+            req.figures.len()
+        )));
+    }
+    let figs = figures::read_all(&req.figures, lattice, &s.limits)?;
+    figures::check_equal_areas(&req.figures, &figs)?;
+    let defaults = Options::default();
+    let area_weight = req.area_weight.unwrap_or(defaults.area_weight);
+    if !(area_weight.is_finite() && (0.0..=1000.0).contains(&area_weight)) {
+        return Err(ApiError::BadValue(format!(
+            "area_weight must be a number from 0 to 1000, got {area_weight}"
+        )));
+    }
+    let max_t = s.limits.max_time_limit();
+    let time_limit = req.time_limit.unwrap_or(max_t);
+    if !(time_limit.is_finite() && time_limit > 0.0 && time_limit <= max_t) {
+        return Err(ApiError::BadValue(format!(
+            "time_limit must be more than 0 and at most {max_t} seconds, got {time_limit}"
+        )));
+    }
+    let explorations = req.explorations.unwrap_or(defaults.explorations);
+    if !(1..=10_000).contains(&explorations) {
+        return Err(ApiError::BadValue(format!(
+            "explorations must be from 1 to 10000, got {explorations}"
+        )));
+    }
+    if req.max_pieces == Some(0) {
+        return Err(ApiError::BadValue("max_pieces must be at least 1".into()));
+    }
+    let mirror = req.mirror.unwrap_or(true) && lattice.lattice().supports_mirror();
+    let options = Options {
+        mirror,
+        seed: req.seed.unwrap_or(defaults.seed),
+        threads: s.limits.threads(),
+        area_weight,
+        explorations,
+        max_pieces: req.max_pieces,
+        ..Options::default()
+    };
+    let names = req
+        .figures
+        .iter()
+        .enumerate()
+        .map(|(i, f)| figures::name_of(f, i))
+        .collect();
+    let job = s.jobs.start(Request {
+        lattice,
+        figures: figs,
+        names,
+        options,
+        time_limit,
+    })?;
+    let id = job.id();
+    Ok((
+        StatusCode::ACCEPTED,
+        [(header::LOCATION, format!("/api/solve/{id}"))],
+        Json(json!({
+            "id": id,
+            "status": format!("/api/solve/{id}"),
+            "events": format!("/api/solve/{id}/events"),
+            "stop": format!("/api/solve/{id}/stop"),
+        })),
+    )
+        .into_response())
+}
+
+fn job(s: &AppState, id: &str) -> Result<Arc<Job>, ApiError> {
+    id.parse::<u64>()
+        .ok()
+        .and_then(|n| s.jobs.get(n))
+        .ok_or_else(|| ApiError::NotFound(format!("no solve with id {id:?}")))
+}
+
+async fn solve_status(
+    State(s): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<Json<Value>, ApiError> {
+    let job = job(&s, &id)?;
+    Ok(Json(json!(job.snapshot())))
+}
+
+async fn stop_solve(
+    State(s): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<Json<Value>, ApiError> {
+    let job = job(&s, &id)?;
+    job.stop();
+    Ok(Json(json!(job.snapshot())))
+}
+
+/// Server-sent events: `progress` while running (at most ten a second, at
+/// least one a second), then one `done` event with the result, then the end.
+async fn solve_events(
+    State(s): State<AppState>,
+    Path(id): Path<String>,
+) -> Result<Sse<impl Stream<Item = Result<SseEvent, Infallible>>>, ApiError> {
+    let job = job(&s, &id)?;
+    let rx = job.subscribe();
+    let stream = futures_util::stream::unfold(
+        (job, rx, true, false),
+        |(job, mut rx, first, ended)| async move {
+            if ended {
+                return None;
+            }
+            if !first {
+                tokio::time::sleep(Duration::from_millis(100)).await;
+                if let Ok(Err(_)) = tokio::time::timeout(Duration::from_secs(1), rx.changed()).await
+                {
+                    // The job is gone: report where it was and end.
+                    let snap = job.snapshot();
+                    let ev = SseEvent::default()
+                        .event("done")
+                        .data(json!(snap).to_string());
+                    return Some((Ok(ev), (job, rx, false, true)));
+                }
+            }
+            rx.borrow_and_update();
+            let snap = job.snapshot();
+            let done = snap.state != JobState::Running;
+            let ev = SseEvent::default()
+                .event(if done { "done" } else { "progress" })
+                .data(json!(snap).to_string());
+            Some((Ok(ev), (job, rx, false, done)))
+        },
+    );
+    Ok(Sse::new(stream).keep_alive(KeepAlive::default()))
+}
+
+async fn static_or_404(uri: Uri) -> Response {
+    let path = uri.path();
+    if !path.starts_with("/api/") {
+        if let Some((ty, bytes)) = assets::find(path.trim_start_matches('/')) {
+            return (
+                [
+                    (header::CONTENT_TYPE, ty),
+                    (header::CACHE_CONTROL, "no-cache"),
+                ],
+                bytes,
+            )
+                .into_response();
+        }
+    }
+    ApiError::NotFound(format!("nothing at {path}")).into_response()
+}
