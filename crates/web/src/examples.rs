@@ -1,5 +1,5 @@
 //! The example puzzles shipped in the binary: the repository's example and a
-//! few of the benchmark instances (copied into `crates/web/examples/`).
+//! few of the benchmark instances (copied into `crates/web/puzzles/`).
 
 use serde_json::{json, Value};
 
@@ -15,7 +15,7 @@ macro_rules! fig {
     ($dir:literal, $file:literal) => {
         (
             $file,
-            include_str!(concat!("../examples/", $dir, "/", $file)),
+            include_str!(concat!("../puzzles/", $dir, "/", $file)),
         )
     };
 }
