@@ -1,0 +1,29 @@
+//! Pictures in and out for `dissect`.
+//!
+//! * Out: a [`Scene`] (the pieces of every figure, their colours, outlines
+//!   and voxels) is built once from a solution, then each exporter is one
+//!   small function of it: [`svg`], [`png`], [`cut_sheet`], [`stl`],
+//!   [`ldraw`].
+//! * In: [`rasterize`] turns a picture (PNG, JPEG, SVG, or a stack of
+//!   slices) into a figure with an exact cell count; [`voxelize`] does the
+//!   same for a closed STL mesh.
+//!
+//! Architecture invariant: no I/O and no printing. Every public function
+//! takes strings or bytes and returns strings or bytes, so a server can
+//! call it as well as the command line.
+
+#![forbid(unsafe_code)]
+
+pub mod colour;
+
+pub mod drawing;
+mod error;
+mod font;
+pub mod outline;
+pub mod png;
+pub mod scene;
+pub mod svg;
+mod view;
+
+pub use error::RenderError;
+pub use scene::Scene;

@@ -1,0 +1,228 @@
+//! The scene: what every exporter draws or builds. It holds, for every
+//! figure of a dissection, the cells of every piece, and for 2D lattices the
+//! merged outline of every piece and of the whole figure; pieces have a
+//! label and a colour that are the same in every figure and every format.
+
+use std::collections::{HashMap, HashSet, VecDeque};
+
+use dissect_core::io::{parse_figure, parse_solution, Dissection};
+use dissect_core::{Cell, LatticeKind};
+
+use crate::colour::{piece_colour, Rgb};
+use crate::outline::Outline;
+use crate::RenderError;
+
+/// A dissection ready to be drawn.
+///
+/// # Validity
+/// At least one figure; every figure has the same number (at least one) of
+/// non-empty pieces; for 2D lattices `outlines[f][i]` is the outline of
+/// `pieces[f][i]` and `figure_outlines[f]` that of the whole figure. A scene
+/// built by [`Scene::from_solution`] with figures is also a valid dissection
+/// (checked by `dissect_core::verify`).
+#[derive(Clone, Debug)]
+pub struct Scene {
+    lattice: LatticeKind,
+    names: Vec<String>,
+    pieces: Vec<Vec<Vec<Cell>>>,
+    outlines: Vec<Vec<Outline>>,
+    figure_outlines: Vec<Outline>,
+}
+
+impl Scene {
+    /// A scene of a dissection (not checked against any figure).
+    pub fn new(d: &Dissection) -> Result<Scene, RenderError> {
+        if d.pieces.is_empty() {
+            return Err(RenderError::Mismatch("the solution has no figure".into()));
+        }
+        let n = d.pieces[0].len();
+        if n == 0 {
+            return Err(RenderError::Mismatch("the solution has no piece".into()));
+        }
+        for (f, fp) in d.pieces.iter().enumerate() {
+            if fp.len() != n {
+                return Err(RenderError::Mismatch(format!(
+                    "figure {} has {} pieces, figure 1 has {n}",
+                    f + 1,
+                    fp.len()
+                )));
+            }
+            if let Some(i) = fp.iter().position(|p| p.is_empty()) {
+                return Err(RenderError::Mismatch(format!(
+                    "figure {} piece {} is empty",
+                    f + 1,
+                    i + 1
+                )));
+            }
+        }
+        let two_d = d.lattice != LatticeKind::Cubic;
+        let outlines = if two_d {
+            d.pieces
+                .iter()
+                .map(|fp| fp.iter().map(|p| Outline::of_cells(d.lattice, p)).collect())
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let figure_outlines = if two_d {
+            d.pieces
+                .iter()
+                .map(|fp| Outline::of_cells(d.lattice, &fp.concat()))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let names = (0..d.pieces.len())
+            .map(|f| {
+                d.names
+                    .get(f)
+                    .filter(|s| !s.is_empty())
+                    .cloned()
+                    .unwrap_or_else(|| format!("figure {}", f + 1))
+            })
+            .collect();
+        Ok(Scene {
+            lattice: d.lattice,
+            names,
+            pieces: d.pieces.clone(),
+            outlines,
+            figure_outlines,
+        })
+    }
+
+    /// A scene from a solution JSON text. When figure texts are given (in
+    /// the solution's order) the solution must be a valid dissection of
+    /// them.
+    pub fn from_solution(solution: &str, figures: &[&str]) -> Result<Scene, RenderError> {
+        let (_, d) = parse_solution(solution)?;
+        if !figures.is_empty() {
+            if figures.len() != d.pieces.len() {
+                return Err(RenderError::Mismatch(format!(
+                    "the solution has {} figures, {} were given",
+                    d.pieces.len(),
+                    figures.len()
+                )));
+            }
+            let figs = figures
+                .iter()
+                .enumerate()
+                .map(|(index, t)| {
+                    parse_figure(t, d.lattice).map_err(|error| RenderError::Figure { index, error })
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            if let Err(v) = dissect_core::verify::verify(&d, &figs) {
+                return Err(RenderError::Invalid(v[0].to_string()));
+            }
+        }
+        Scene::new(&d)
+    }
+
+    /// The lattice.
+    pub fn lattice(&self) -> LatticeKind {
+        self.lattice
+    }
+
+    /// The number of figures.
+    pub fn figure_count(&self) -> usize {
+        self.pieces.len()
+    }
+
+    /// The number of pieces (the same in every figure).
+    pub fn piece_count(&self) -> usize {
+        self.pieces[0].len()
+    }
+
+    /// The name of figure `f`.
+    pub fn name(&self, f: usize) -> &str {
+        &self.names[f]
+    }
+
+    /// The cells of piece `i` in figure `f`.
+    pub fn cells(&self, f: usize, i: usize) -> &[Cell] {
+        &self.pieces[f][i]
+    }
+
+    /// The merged outline of piece `i` in figure `f` (2D lattices; empty for `cubic`).
+    pub fn outline(&self, f: usize, i: usize) -> Outline {
+        self.outlines
+            .get(f)
+            .and_then(|o| o.get(i))
+            .cloned()
+            .unwrap_or_default()
+    }
+
+    /// The merged outline of figure `f` (2D lattices; empty for `cubic`).
+    pub fn figure_outline(&self, f: usize) -> Outline {
+        self.figure_outlines.get(f).cloned().unwrap_or_default()
+    }
+
+    /// The label of piece `i` (`A`, `B`, ...).
+    pub fn label(&self, i: usize) -> String {
+        dissect_core::ascii::piece_letter(i).to_string()
+    }
+
+    /// The colour of piece `i`.
+    pub fn colour(&self, i: usize) -> Rgb {
+        piece_colour(i)
+    }
+
+    /// The number of cells of piece `i`.
+    pub fn area(&self, i: usize) -> usize {
+        self.pieces[0][i].len()
+    }
+
+    /// Where to write a 2D piece's label, in lattice units: the centre of
+    /// its cell deepest inside the piece.
+    pub fn label_point(&self, f: usize, i: usize) -> [f64; 2] {
+        let cells = &self.pieces[f][i];
+        let c = deepest_cell(self.lattice, cells);
+        cell_centre(self.lattice, c)
+    }
+}
+
+/// The centre of a 2D cell in lattice units (centroid for triangles).
+pub fn cell_centre(lattice: LatticeKind, [x, y, t]: Cell) -> [f64; 2] {
+    let (x, y) = (x as f64, y as f64);
+    if lattice == LatticeKind::Tri4 {
+        let off = [
+            [0.5, 1.0 / 6.0],
+            [5.0 / 6.0, 0.5],
+            [0.5, 5.0 / 6.0],
+            [1.0 / 6.0, 0.5],
+        ];
+        let o = off[t.clamp(0, 3) as usize];
+        [x + o[0], y + o[1]]
+    } else {
+        [x + 0.5, y + 0.5]
+    }
+}
+
+/// The cell farthest (in adjacency steps) from the cells outside the set;
+/// ties go to the smallest cell, so the choice is reproducible.
+pub fn deepest_cell(lattice: LatticeKind, cells: &[Cell]) -> Cell {
+    let l = lattice.lattice();
+    let set: HashSet<Cell> = cells.iter().copied().collect();
+    let mut dist: HashMap<Cell, u32> = HashMap::new();
+    let mut queue = VecDeque::new();
+    for &c in cells {
+        if l.neighbors(c).iter().any(|n| !set.contains(n)) {
+            dist.insert(c, 0);
+            queue.push_back(c);
+        }
+    }
+    while let Some(c) = queue.pop_front() {
+        let d = dist[&c];
+        for n in l.neighbors(c) {
+            if set.contains(&n) && !dist.contains_key(&n) {
+                dist.insert(n, d + 1);
+                queue.push_back(n);
+            }
+        }
+    }
+    let mut sorted: Vec<Cell> = cells.to_vec();
+    sorted.sort();
+    *sorted
+        .iter()
+        .max_by_key(|c| (dist.get(*c).copied().unwrap_or(0), std::cmp::Reverse(**c)))
+        .expect("a piece has cells")
+}
