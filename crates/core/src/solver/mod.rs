@@ -336,6 +336,7 @@ pub fn solve(
             explorations: n,
         });
         let done = AtomicUsize::new(0);
+        let total = AtomicUsize::new(n);
         let best_seen = Mutex::new((f64::INFINITY, u64::MAX));
         let run_one = |i: usize| -> (Candidate, Score) {
             let mut rng = stream(options.seed, level, i);
@@ -356,7 +357,7 @@ pub fn solve(
             observer.on_event(&Event::Exploration {
                 level,
                 done: d,
-                total: n,
+                total: total.load(Ordering::Relaxed),
                 best_score: bs,
                 best_mismatch: bm,
             });
@@ -392,6 +393,7 @@ pub fn solve(
                 && best_mismatch <= near_miss
             {
                 planned += n;
+                total.store(planned, Ordering::Relaxed);
                 observer.on_event(&Event::LevelStarted {
                     level,
                     pieces,
