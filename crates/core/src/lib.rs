@@ -19,3 +19,6 @@ pub mod verify;
 pub use figure::Figure;
 pub use lattice::{Cell, Lattice, LatticeKind};
 pub use solver::{solve, Options};
+
+#[cfg(test)]
+mod tests;

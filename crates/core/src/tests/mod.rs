@@ -1,0 +1,11 @@
+//! Crate-internal unit tests of the solver's building blocks: distance,
+//! matching, flood fill, refinement and levels. Figures are ASCII strings
+//! (see [`util`]).
+
+mod distance;
+mod flood_fill;
+mod levels;
+mod matching;
+mod refine;
+mod shape;
+mod util;
