@@ -1,0 +1,52 @@
+//! The exact mode of `dissect`: lower bounds with their reasons, and a SAT
+//! search that finds minimum dissections and proves that none with fewer
+//! pieces exists.
+//!
+//! * Cheap bounds ([`bound::cheap_bound`]): the number of connected
+//!   components of a figure, and a clique of *incompatible* cells (cells of
+//!   one figure that no single connected piece can hold together because it
+//!   would not fit inside another figure; the 8 corners of a 6³ cube against
+//!   three separate smaller cubes force 8 pieces).
+//! * The question "is there a dissection into at most K pieces?" as SAT
+//!   ([`placement_encoding`]), solved by CaDiCaL. Without connectivity the
+//!   encoding is a relaxation: UNSAT proves the lower bound K+1. Connectivity
+//!   is added lazily ([`connectivity_cut`]): a model whose pieces are split
+//!   gets clauses that forbid the split, so a model that survives is a real
+//!   K-piece dissection (and is checked by `dissect_core::verify` before it
+//!   is reported).
+//! * [`search::search`] runs the loop over K, shares its bounds with a
+//!   caller (the heuristic solver running beside it) and stops on request.
+//!
+//! Architecture invariant: like the core, this crate does no I/O and never
+//! prints; progress leaves through [`search::ExactObserver`]. The SAT backend
+//! (the `cadical` crate) is a dependency of this crate only, and only
+//! [`sat_backend`] names it.
+
+pub mod bound;
+pub(crate) mod component_count;
+pub(crate) mod connectivity_cut;
+pub(crate) mod incompatible_clique;
+pub(crate) mod instance;
+pub mod motion;
+pub mod placement_encoding;
+pub(crate) mod sat_backend;
+pub mod search;
+
+pub use bound::{cheap_bound, Bound, Reason};
+pub use motion::MotionSet;
+pub use placement_encoding::EncodingSize;
+pub use search::{search, ExactEvent, ExactObserver, ExactOptions, ExactOutcome, Mode};
+
+/// Occurs when figures cannot be given to the exact search.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ExactError {
+    /// Occurs when the figures are not a valid dissection problem (fewer than
+    /// two, mixed lattices, unequal areas).
+    #[error(transparent)]
+    Figures(#[from] dissect_core::solver::SolveError),
+    /// Occurs when a model decoded from the SAT solver fails the independent
+    /// verifier: a bug in the encoding, never the user's fault.
+    #[error("internal error: a SAT model decoded into an invalid dissection: {0}")]
+    InvalidModel(String),
+}

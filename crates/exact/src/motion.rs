@@ -1,0 +1,104 @@
+//! Motions (a point symmetry, then a lattice translation) that carry a piece
+//! of the reference figure into another figure, and the symmetries of a
+//! figure, used to break the symmetry of the search.
+
+use std::collections::HashMap;
+
+use dissect_core::lattice::Point;
+use dissect_core::transform::Transform;
+
+use crate::instance::Instance;
+
+/// Which point symmetries a search may use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MotionSet {
+    /// Translations only.
+    Translations,
+    /// Rotations (determinant +1), no flips.
+    Rotations,
+    /// Every allowed symmetry.
+    All,
+}
+
+impl MotionSet {
+    /// Whether the symmetry with this determinant (and index, 0 = identity) is in the set.
+    pub fn admits(self, index: usize, determinant: i32) -> bool {
+        match self {
+            MotionSet::Translations => index == 0,
+            MotionSet::Rotations => determinant == 1,
+            MotionSet::All => true,
+        }
+    }
+}
+
+/// A motion of the reference figure, with the index of its symmetry.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Motion {
+    pub sym: usize,
+    pub transform: Transform,
+}
+
+/// Every motion of `set` under which at least one cell of shape 0 lands in
+/// shape `to`, sorted by symmetry then shift.
+pub(crate) fn motions_into(inst: &Instance, to: usize, set: MotionSet) -> Vec<Motion> {
+    let from = &inst.shapes[0];
+    let target = &inst.shapes[to];
+    let mut out = Vec::new();
+    for (gi, g) in inst.syms.iter().enumerate() {
+        if !set.admits(gi, g.determinant()) {
+            continue;
+        }
+        let mut shifts: HashMap<Point, u32> = HashMap::new();
+        for p in &from.points {
+            let gp = g.apply(*p);
+            for q in &target.points {
+                let t = [q[0] - gp[0], q[1] - gp[1], q[2] - gp[2]];
+                if inst.is_translation(t) {
+                    *shifts.entry(t).or_default() += 1;
+                }
+            }
+        }
+        let mut list: Vec<Point> = shifts.into_keys().collect();
+        list.sort();
+        out.extend(list.into_iter().map(|t| Motion {
+            sym: gi,
+            transform: Transform::new(*g, t),
+        }));
+    }
+    out
+}
+
+/// The indices of the symmetries `g` for which `g(shape) + t = shape` for
+/// some translation `t`.
+pub(crate) fn self_symmetries(inst: &Instance, shape: usize) -> Vec<usize> {
+    let s = &inst.shapes[shape];
+    let min = *s.points.iter().min().expect("non-empty");
+    let mut out = Vec::new();
+    for (gi, g) in inst.syms.iter().enumerate() {
+        let img: Vec<Point> = s.points.iter().map(|p| g.apply(*p)).collect();
+        let m = *img.iter().min().expect("non-empty");
+        let t = [min[0] - m[0], min[1] - m[1], min[2] - m[2]];
+        if inst.is_translation(t)
+            && img.iter().all(|p| {
+                s.index
+                    .contains_key(&[p[0] + t[0], p[1] + t[1], p[2] + t[2]])
+            })
+        {
+            out.push(gi);
+        }
+    }
+    out
+}
+
+/// For each symmetry index, whether it is the representative (smallest
+/// index) of its coset `{h ∘ g : h ∈ group}`.
+pub(crate) fn coset_representatives(inst: &Instance, group: &[usize]) -> Vec<bool> {
+    (0..inst.syms.len())
+        .map(|gi| {
+            group.iter().all(|&h| {
+                let hg = inst.syms[h].compose(&inst.syms[gi]);
+                inst.syms.iter().position(|s| *s == hg).unwrap_or(gi) >= gi
+            })
+        })
+        .collect()
+}

@@ -1,0 +1,203 @@
+//! "Is there a dissection into at most K pieces?" as CNF.
+//!
+//! Variables:
+//! * `cell[f][i][c]`: cell `c` of shape `f` belongs to piece `i`;
+//! * `motion[f][i][m]` (shapes `f ≥ 1`): piece `i` of the reference shape 0
+//!   goes into shape `f` by motion `m`.
+//!
+//! Clauses:
+//! * every cell of every shape is in exactly one piece;
+//! * every piece has a motion into every other shape (at least one; when
+//!   two are true both carry the piece onto its copy, since the copies
+//!   exactly cover a shape of the same area);
+//! * `cell[0][i][a] ∧ motion[f][i][m] → cell[f][i][m(a)]` (false when `m(a)`
+//!   lies outside shape `f`), and the same backwards through `m⁻¹`;
+//! * symmetry breaking: the cells of an incompatible clique of shape 0 go to
+//!   pieces `0, 1, ...`; the other pieces are ordered by their first cell; the
+//!   first piece's motion into shape `f` is taken up to the symmetries of
+//!   shape `f`;
+//! * incompatible cells (see `incompatible_clique`) never share a piece.
+//!
+//! Pieces need not be connected: UNSAT proves that no K-piece dissection
+//! exists; a model is a real dissection once its pieces are connected
+//! (`connectivity_cut` adds clauses until they are).
+
+use crate::incompatible_clique::Incompatibility;
+use crate::instance::Instance;
+use crate::motion::{coset_representatives, motions_into, self_symmetries, Motion, MotionSet};
+use crate::sat_backend::Sat;
+
+/// The variables of one encoding.
+///
+/// # Validity
+/// `cell[f][i]` has one variable per cell of shape `f`; `motion[0]` is
+/// empty; every `motion[f][i]` (f ≥ 1) is non-empty.
+pub(crate) struct Encoding {
+    pub k: usize,
+    pub cell: Vec<Vec<Vec<i32>>>,
+    pub motion: Vec<Vec<Vec<(i32, Motion)>>>,
+}
+
+/// Counts of what was encoded.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct EncodingSize {
+    /// Variables.
+    pub vars: usize,
+    /// Clauses.
+    pub clauses: usize,
+    /// Motion variables.
+    pub motions: usize,
+}
+
+/// Encodes "at most `k` pieces" with motions from `set` into `sat`.
+///
+/// `clique` lists cells of shape 0 that are pairwise incompatible (at most
+/// `k` of them are used); `incompat[f]` is shape `f`'s incompatibility graph.
+pub(crate) fn encode(
+    inst: &Instance,
+    sat: &mut Sat<'_>,
+    k: usize,
+    set: MotionSet,
+    clique: &[usize],
+    incompat: &[Incompatibility],
+) -> Encoding {
+    let shapes = &inst.shapes;
+    let n = shapes[0].len();
+    let cell: Vec<Vec<Vec<i32>>> = shapes
+        .iter()
+        .map(|s| {
+            (0..k)
+                .map(|_| (0..s.len()).map(|_| sat.var()).collect())
+                .collect()
+        })
+        .collect();
+    // Exactly one piece per cell.
+    for per_piece in &cell {
+        for c in 0..per_piece[0].len() {
+            let lits: Vec<i32> = per_piece.iter().map(|p| p[c]).collect();
+            sat.add(&lits);
+            for i in 0..k {
+                for j in i + 1..k {
+                    sat.add(&[-lits[i], -lits[j]]);
+                }
+            }
+        }
+    }
+    // Symmetry breaking on piece order.
+    let q = clique.len().min(k);
+    let anchor: Vec<usize> = if q > 0 { clique[..q].to_vec() } else { vec![0] };
+    for (i, &c) in clique.iter().take(q).enumerate() {
+        sat.add(&[cell[0][i][c]]);
+    }
+    if q == 0 {
+        // Piece 0 holds cell 0; later pieces are ordered by their first cell.
+        sat.add(&[cell[0][0][0]]);
+    }
+    let ordered_from = if q == 0 { 0 } else { q };
+    for i in ordered_from..k.saturating_sub(1) {
+        // u[a]: piece i has a cell among 0..=a.
+        let u: Vec<i32> = (0..n).map(|_| sat.var()).collect();
+        sat.add(&[-u[0], cell[0][i][0]]);
+        for a in 1..n {
+            sat.add(&[-u[a], u[a - 1], cell[0][i][a]]);
+        }
+        sat.add(&[-cell[0][i + 1][0]]);
+        for a in 1..n {
+            sat.add(&[-cell[0][i + 1][a], u[a - 1]]);
+        }
+    }
+    // Incompatible cells never share a piece.
+    for (f, g) in incompat.iter().enumerate() {
+        for a in 0..shapes[f].len() {
+            for b in a + 1..shapes[f].len() {
+                if g.apart(a, b) {
+                    for piece in &cell[f] {
+                        sat.add(&[-piece[a], -piece[b]]);
+                    }
+                }
+            }
+        }
+    }
+    // Motions.
+    let mut motion: Vec<Vec<Vec<(i32, Motion)>>> = vec![Vec::new()];
+    for f in 1..shapes.len() {
+        let all = motions_into(inst, f, set);
+        let group: Vec<usize> = self_symmetries(inst, f)
+            .into_iter()
+            .filter(|&h| set.admits(h, inst.syms[h].determinant()))
+            .collect();
+        let reps = coset_representatives(inst, &group);
+        let target = &shapes[f];
+        let mut per_piece = Vec::with_capacity(k);
+        for (i, (from, into)) in cell[0].iter().zip(&cell[f]).enumerate() {
+            let anchor_cell = anchor.get(i).copied();
+            let allowed: Vec<Motion> = all
+                .iter()
+                .filter(|m| i != 0 || reps[m.sym])
+                .filter(|m| {
+                    anchor_cell.map_or(true, |c| {
+                        target
+                            .index
+                            .contains_key(&m.transform.apply(shapes[0].points[c]))
+                    })
+                })
+                .copied()
+                .collect();
+            let vars: Vec<(i32, Motion)> = allowed.into_iter().map(|m| (sat.var(), m)).collect();
+            let lits: Vec<i32> = vars.iter().map(|(v, _)| *v).collect();
+            sat.add(&lits);
+            for &(mv, m) in &vars {
+                let t = m.transform;
+                for (a, p) in shapes[0].points.iter().enumerate() {
+                    let img = t.apply(*p);
+                    match target.index.get(&img) {
+                        Some(&b) => sat.add(&[-from[a], -mv, into[b]]),
+                        None => sat.add(&[-from[a], -mv]),
+                    }
+                }
+                let inv = t.inverse();
+                for (b, q) in target.points.iter().enumerate() {
+                    let pre = inv.apply(*q);
+                    match shapes[0].index.get(&pre) {
+                        Some(&a) => sat.add(&[-into[b], -mv, from[a]]),
+                        None => sat.add(&[-into[b], -mv]),
+                    }
+                }
+            }
+            per_piece.push(vars);
+        }
+        motion.push(per_piece);
+    }
+    Encoding { k, cell, motion }
+}
+
+impl Encoding {
+    /// The pieces of the last model: `pieces[f][i]` are cell indices of
+    /// shape `f`; pieces empty in the model are dropped.
+    pub fn decode(&self, sat: &Sat<'_>) -> Vec<Vec<Vec<usize>>> {
+        let mut pieces: Vec<Vec<Vec<usize>>> = self
+            .cell
+            .iter()
+            .map(|per_piece| {
+                per_piece
+                    .iter()
+                    .map(|vars| (0..vars.len()).filter(|&c| sat.value(vars[c])).collect())
+                    .collect()
+            })
+            .collect();
+        let keep: Vec<bool> = (0..self.k).map(|i| !pieces[0][i].is_empty()).collect();
+        for p in pieces.iter_mut() {
+            let mut i = 0;
+            p.retain(|_| {
+                i += 1;
+                keep[i - 1]
+            });
+        }
+        pieces
+    }
+
+    /// The number of motion variables.
+    pub fn motions(&self) -> usize {
+        self.motion.iter().flatten().map(|v| v.len()).sum()
+    }
+}

@@ -1,0 +1,82 @@
+//! The SAT backend: CaDiCaL through the `cadical` crate. The only module
+//! that names the backend, so another one can replace it here alone.
+
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::time::Instant;
+
+/// Ends a solve when the stop flag rises or the deadline passes.
+struct StopCheck<'a> {
+    stop: &'a AtomicBool,
+    deadline: Option<Instant>,
+    /// Give up once the shared upper bound falls to this or below.
+    upper: Option<(&'a AtomicUsize, usize)>,
+}
+
+impl cadical::Callbacks for StopCheck<'_> {
+    fn terminate(&mut self) -> bool {
+        self.stop.load(Ordering::Relaxed)
+            || self.deadline.is_some_and(|d| Instant::now() >= d)
+            || self
+                .upper
+                .is_some_and(|(u, at)| u.load(Ordering::Relaxed) <= at)
+    }
+}
+
+/// An incremental SAT solver with DIMACS literals.
+pub(crate) struct Sat<'a> {
+    solver: cadical::Solver<StopCheck<'a>>,
+    next_var: i32,
+    clauses: usize,
+}
+
+impl<'a> Sat<'a> {
+    /// A solver that gives up when `stop` rises or when `upper.0` falls to
+    /// `upper.1` or below.
+    pub fn new(stop: &'a AtomicBool, upper: Option<(&'a AtomicUsize, usize)>) -> Sat<'a> {
+        let mut solver = cadical::Solver::new();
+        solver.set_callbacks(Some(StopCheck {
+            stop,
+            deadline: None,
+            upper,
+        }));
+        Sat {
+            solver,
+            next_var: 1,
+            clauses: 0,
+        }
+    }
+
+    /// A fresh variable.
+    pub fn var(&mut self) -> i32 {
+        let v = self.next_var;
+        self.next_var += 1;
+        v
+    }
+
+    pub fn add(&mut self, clause: &[i32]) {
+        self.clauses += 1;
+        self.solver.add_clause(clause.iter().copied());
+    }
+
+    pub fn clauses(&self) -> usize {
+        self.clauses
+    }
+
+    pub fn vars(&self) -> usize {
+        (self.next_var - 1) as usize
+    }
+
+    /// `Some(true)`: satisfiable, `Some(false)`: unsatisfiable, `None`:
+    /// stopped or past the deadline.
+    pub fn solve(&mut self, deadline: Option<Instant>) -> Option<bool> {
+        if let Some(cb) = self.solver.get_callbacks() {
+            cb.deadline = deadline;
+        }
+        self.solver.solve()
+    }
+
+    /// The value of a variable in the last model.
+    pub fn value(&self, var: i32) -> bool {
+        self.solver.value(var) == Some(true)
+    }
+}

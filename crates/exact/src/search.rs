@@ -1,0 +1,345 @@
+//! The exact search: cheap bounds first, then "at most K pieces?" by SAT for
+//! K = the bound, the bound + 1, ... until a dissection is found, the caller's
+//! upper bound is met, or the time runs out.
+
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+use dissect_core::{Cell, Figure};
+
+use crate::bound::{cheap, Bound, Reason};
+use crate::connectivity_cut::cuts;
+use crate::incompatible_clique::Incompatibility;
+use crate::instance::Instance;
+use crate::motion::MotionSet;
+use crate::placement_encoding::{encode, EncodingSize};
+use crate::sat_backend::Sat;
+use crate::ExactError;
+
+/// What the search is for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// Raise the lower bound; a dissection is reported only when the SAT
+    /// search meets one on the way.
+    LowerBound,
+    /// Find a minimum dissection: before the full model for each K, try
+    /// translations only, then rotations only (these find dissections fast
+    /// but prove nothing).
+    Minimum,
+}
+
+/// Settings of [`search`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExactOptions {
+    /// Whether 2D pieces may be turned over (ignored on `cubic`).
+    pub mirror: bool,
+    /// What to search for.
+    pub mode: Mode,
+    /// Give up (reporting what is proved) at this instant.
+    pub deadline: Option<Instant>,
+    /// Try no more than this many pieces.
+    pub max_pieces: Option<usize>,
+    /// Time for each restricted-motion pass in [`Mode::Minimum`].
+    pub restricted_time: Duration,
+    /// Connectivity cuts added per split piece and model.
+    pub cuts_per_piece: usize,
+}
+
+impl Default for ExactOptions {
+    fn default() -> ExactOptions {
+        ExactOptions {
+            mirror: true,
+            mode: Mode::LowerBound,
+            deadline: None,
+            max_pieces: None,
+            restricted_time: Duration::from_secs(10),
+            cuts_per_piece: 4,
+        }
+    }
+}
+
+/// Progress of the exact search.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum ExactEvent {
+    /// The bound from components and incompatible cells.
+    CheapBound(Bound),
+    /// A SAT model for `pieces` pieces was built.
+    Encoded {
+        /// K.
+        pieces: usize,
+        /// Which motions it allows.
+        motions: MotionSet,
+        /// Its size.
+        size: EncodingSize,
+    },
+    /// A model had split pieces; connectivity cuts were added.
+    Cuts {
+        /// K.
+        pieces: usize,
+        /// Cuts added now.
+        added: usize,
+        /// Cuts added for this K in all.
+        total: usize,
+    },
+    /// No dissection into `bound.value - 1` pieces: the bound rose.
+    Refuted(Bound),
+    /// A restricted pass ended without a dissection (this proves nothing).
+    Inconclusive {
+        /// K.
+        pieces: usize,
+        /// The pass.
+        motions: MotionSet,
+        /// Whether it ran out of time (else it was unsatisfiable).
+        timed_out: bool,
+    },
+    /// A verified dissection into `pieces` pieces.
+    Found {
+        /// Its piece count.
+        pieces: usize,
+        /// Seconds since the search started.
+        seconds: f64,
+    },
+}
+
+/// Receives [`ExactEvent`]s.
+pub trait ExactObserver: Sync {
+    /// Called for every event.
+    fn on_event(&self, event: &ExactEvent);
+}
+
+impl ExactObserver for () {
+    fn on_event(&self, _event: &ExactEvent) {}
+}
+
+/// What the exact search proved and found.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExactOutcome {
+    /// The best lower bound proved.
+    pub lower_bound: Bound,
+    /// A verified dissection (`pieces[f][i]`, input order), if one was found.
+    pub found: Option<Vec<Vec<Vec<Cell>>>>,
+    /// Whether the search ended before it could finish (stop flag, deadline
+    /// or the caller's upper bound).
+    pub stopped: bool,
+}
+
+impl ExactOutcome {
+    /// Whether the dissection found is proved minimum.
+    pub fn optimal(&self) -> bool {
+        self.found
+            .as_ref()
+            .is_some_and(|p| p.first().map_or(0, |f| f.len()) <= self.lower_bound.value)
+    }
+}
+
+enum Pass {
+    Unsat { cuts: usize, seconds: f64 },
+    Found(Vec<Vec<Vec<usize>>>),
+    Unknown,
+}
+
+struct Context<'a> {
+    inst: &'a Instance,
+    clique: &'a [usize],
+    incompat: &'a [Incompatibility],
+    stop: &'a AtomicBool,
+    upper: &'a AtomicUsize,
+    observer: &'a dyn ExactObserver,
+    cuts_per_piece: usize,
+}
+
+impl Context<'_> {
+    /// One SAT model for `k` pieces with `set` motions, with connectivity
+    /// cuts until a model is connected, the model is UNSAT, or time is up.
+    fn pass(&self, k: usize, set: MotionSet, deadline: Option<Instant>) -> Pass {
+        let start = Instant::now();
+        let mut sat = Sat::new(self.stop, Some((self.upper, k)));
+        let enc = encode(self.inst, &mut sat, k, set, self.clique, self.incompat);
+        self.observer.on_event(&ExactEvent::Encoded {
+            pieces: k,
+            motions: set,
+            size: EncodingSize {
+                vars: sat.vars(),
+                clauses: sat.clauses(),
+                motions: enc.motions(),
+            },
+        });
+        let mut total = 0;
+        loop {
+            match sat.solve(deadline) {
+                None => return Pass::Unknown,
+                Some(false) => {
+                    return Pass::Unsat {
+                        cuts: total,
+                        seconds: start.elapsed().as_secs_f64(),
+                    }
+                }
+                Some(true) => {
+                    let pieces = enc.decode(&sat);
+                    let found = cuts(&self.inst.shapes, &pieces, self.cuts_per_piece);
+                    if found.is_empty() {
+                        return Pass::Found(pieces);
+                    }
+                    for cut in &found {
+                        for piece in &enc.cell[cut.shape] {
+                            let mut clause = vec![-piece[cut.a], -piece[cut.b]];
+                            clause.extend(cut.separator.iter().map(|&e| piece[e]));
+                            sat.add(&clause);
+                        }
+                    }
+                    total += found.len();
+                    self.observer.on_event(&ExactEvent::Cuts {
+                        pieces: k,
+                        added: found.len(),
+                        total,
+                    });
+                }
+            }
+        }
+    }
+}
+
+/// Proves lower bounds and (in [`Mode::Minimum`], or when met on the way)
+/// finds dissections.
+///
+/// `upper` is the best known piece count (`usize::MAX` for none), shared
+/// with whoever else is searching: the search stops once its lower bound
+/// meets it, and lowers it when it finds a dissection. Raising `stop` ends
+/// the search soon after, with what is proved so far.
+pub fn search(
+    figures: &[Figure],
+    options: &ExactOptions,
+    stop: &AtomicBool,
+    upper: &AtomicUsize,
+    observer: &dyn ExactObserver,
+) -> Result<ExactOutcome, ExactError> {
+    let start = Instant::now();
+    let cheap = cheap(figures, options.mirror)?;
+    observer.on_event(&ExactEvent::CheapBound(cheap.bound.clone()));
+    let reference = if cheap.clique.len() >= 2 {
+        cheap.clique_figure
+    } else {
+        0
+    };
+    let clique: Vec<usize> = if reference == cheap.clique_figure {
+        cheap.clique.clone()
+    } else {
+        Vec::new()
+    };
+    let inst = Instance::new(figures, options.mirror, reference);
+    let incompat: Vec<Incompatibility> = (0..inst.shapes.len())
+        .map(|k| Incompatibility::of_shape(&inst, k))
+        .collect();
+    let ctx = Context {
+        inst: &inst,
+        clique: &clique,
+        incompat: &incompat,
+        stop,
+        upper,
+        observer,
+        cuts_per_piece: options.cuts_per_piece.max(1),
+    };
+    let mut outcome = ExactOutcome {
+        lower_bound: cheap.bound,
+        found: None,
+        stopped: false,
+    };
+    let cells = inst.shapes[0].len();
+    let max = options.max_pieces.unwrap_or(cells).min(cells);
+    let out_of_time = || options.deadline.is_some_and(|d| Instant::now() >= d);
+    let mut k = outcome.lower_bound.value;
+    let restricted: Vec<MotionSet> = match options.mode {
+        Mode::LowerBound => Vec::new(),
+        Mode::Minimum if inst.dim == 3 || !inst.mirror => vec![MotionSet::Translations],
+        Mode::Minimum => vec![MotionSet::Translations, MotionSet::Rotations],
+    };
+    while k <= max {
+        if upper.load(Ordering::SeqCst) <= k {
+            break;
+        }
+        if stop.load(Ordering::SeqCst) || out_of_time() {
+            outcome.stopped = true;
+            break;
+        }
+        let mut found = None;
+        for &set in &restricted {
+            let budget = Instant::now() + options.restricted_time;
+            let deadline = Some(options.deadline.map_or(budget, |d| d.min(budget)));
+            match ctx.pass(k, set, deadline) {
+                Pass::Found(p) => {
+                    found = Some(p);
+                    break;
+                }
+                Pass::Unsat { .. } => observer.on_event(&ExactEvent::Inconclusive {
+                    pieces: k,
+                    motions: set,
+                    timed_out: false,
+                }),
+                Pass::Unknown => observer.on_event(&ExactEvent::Inconclusive {
+                    pieces: k,
+                    motions: set,
+                    timed_out: true,
+                }),
+            }
+            if stop.load(Ordering::SeqCst) || upper.load(Ordering::SeqCst) <= k {
+                break;
+            }
+        }
+        let found = match found {
+            Some(p) => Some(p),
+            None => match ctx.pass(k, MotionSet::All, options.deadline) {
+                Pass::Found(p) => Some(p),
+                Pass::Unsat { cuts, seconds } => {
+                    outcome.lower_bound = Bound {
+                        value: k + 1,
+                        reason: Reason::Sat {
+                            refuted: k,
+                            seconds,
+                            cuts,
+                        },
+                    };
+                    observer.on_event(&ExactEvent::Refuted(outcome.lower_bound.clone()));
+                    k += 1;
+                    continue;
+                }
+                Pass::Unknown => {
+                    outcome.stopped = upper.load(Ordering::SeqCst) > k;
+                    break;
+                }
+            },
+        };
+        if let Some(p) = found {
+            let pieces = to_cells(&inst, &p);
+            dissect_core::verify::verify_pieces(inst.lattice, inst.mirror, figures, &pieces)
+                .map_err(|v| ExactError::InvalidModel(v[0].to_string()))?;
+            let count = pieces[0].len();
+            upper.fetch_min(count, Ordering::SeqCst);
+            observer.on_event(&ExactEvent::Found {
+                pieces: count,
+                seconds: start.elapsed().as_secs_f64(),
+            });
+            outcome.found = Some(pieces);
+            break;
+        }
+    }
+    Ok(outcome)
+}
+
+/// Cell indices per shape to sorted cells per figure, in input order.
+fn to_cells(inst: &Instance, pieces: &[Vec<Vec<usize>>]) -> Vec<Vec<Vec<Cell>>> {
+    let per_shape: Vec<Vec<Vec<Cell>>> = pieces
+        .iter()
+        .zip(&inst.shapes)
+        .map(|(fp, s)| {
+            fp.iter()
+                .map(|p| {
+                    let mut c: Vec<Cell> = p.iter().map(|&i| s.cells[i]).collect();
+                    c.sort();
+                    c
+                })
+                .collect()
+        })
+        .collect();
+    inst.to_input_order(&per_shape)
+}
