@@ -6,9 +6,9 @@
 
 use crate::lattice::Symmetry;
 use crate::piece::Pieces;
+use crate::solver::shape::Layout;
 #[allow(unused_imports)] // for the docs
 use crate::solver::shape::Shape;
-use crate::solver::shape::Layout;
 use crate::transform::Transform;
 
 /// The symmetries and translation lattice the solver may use.
@@ -22,8 +22,9 @@ pub(crate) struct Geometry {
 }
 
 /// One side of a distance computation: a labelled shape's pieces, its cells'
-/// addresses under every symmetry (see [`Shape::moved`]) and its labels by
-/// address (see [`Layout::label_grid`]).
+/// addresses under every symmetry (see [`Shape::moved`]; read on the side
+/// moved from) and its labels by address (see [`Layout::label_grid`]; read on
+/// the side moved onto, may be empty on the other).
 #[derive(Clone, Copy)]
 pub(crate) struct Side<'a> {
     pub(crate) pieces: &'a Pieces,

@@ -3,7 +3,7 @@
 use crate::distance::{Geometry, Side};
 use crate::matching::{match_pieces, PairMatching};
 use crate::piece::Pieces;
-use crate::solver::shape::{Layout, Shape};
+use crate::solver::shape::{LabelGrid, Layout, Shape};
 
 /// The figures of one solve, in solver form.
 ///
@@ -23,7 +23,12 @@ impl Problem {
     pub(crate) fn new(shapes: Vec<Shape>, geo: Geometry) -> Problem {
         let layout = Layout::new(&shapes, geo.modulus);
         let moved = shapes.iter().map(|s| s.moved(&geo.syms, &layout)).collect();
-        Problem { shapes, geo, layout, moved }
+        Problem {
+            shapes,
+            geo,
+            layout,
+            moved,
+        }
     }
 
     /// One side of a distance computation: figure `f` with these pieces.
@@ -38,8 +43,8 @@ impl Problem {
     }
 
     /// Labels of figure `f` by address.
-    fn label_grid(&self, f: usize, labels: &[u16]) -> Vec<u16> {
-        self.layout.label_grid(f, &self.shapes[f], labels)
+    fn label_grid(&self, f: usize, labels: &[u16]) -> LabelGrid<'_> {
+        self.layout.label_grid(f, labels)
     }
 }
 
@@ -86,7 +91,6 @@ impl Candidate {
     /// the other figures so that matched pieces carry the pivot's labels.
     pub(crate) fn align(&mut self, problem: &Problem, pivot: usize) -> Aligned {
         let pp = self.pieces(problem, pivot);
-        let grid_p = problem.label_grid(pivot, &self.labels[pivot]);
         let mut pieces = Vec::with_capacity(problem.shapes.len());
         let mut matchings = Vec::with_capacity(problem.shapes.len());
         for f in 0..problem.shapes.len() {
@@ -99,7 +103,7 @@ impl Candidate {
             let grid_f = problem.label_grid(f, &self.labels[f]);
             let m = match_pieces(
                 &problem.geo,
-                problem.side(pivot, &pp, &grid_p),
+                problem.side(pivot, &pp, &[]),
                 problem.side(f, &pf, &grid_f),
             );
             let mut relabel = vec![0u16; self.k];

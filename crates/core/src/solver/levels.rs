@@ -103,7 +103,12 @@ fn split_worst<R: rand::Rng>(
         .map(|p| p.members(a).to_vec())
         .collect();
     let sub = Problem::new(
-        problem.shapes.iter().zip(&members).map(|(s, m)| s.subset(m)).collect(),
+        problem
+            .shapes
+            .iter()
+            .zip(&members)
+            .map(|(s, m)| s.subset(m))
+            .collect(),
         problem.geo.clone(),
     );
     let mut best: Option<(Candidate, Score)> = None;

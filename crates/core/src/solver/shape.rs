@@ -39,7 +39,10 @@ impl Grid {
         let x = p[0].wrapping_sub(self.lo[0]);
         let y = p[1].wrapping_sub(self.lo[1]);
         let z = p[2].wrapping_sub(self.lo[2]);
-        if (x as u32) >= self.size[0] as u32 || (y as u32) >= self.size[1] as u32 || (z as u32) >= self.size[2] as u32 {
+        if (x as u32) >= self.size[0] as u32
+            || (y as u32) >= self.size[1] as u32
+            || (z as u32) >= self.size[2] as u32
+        {
             return None;
         }
         Some(((z * self.size[1] + y) * self.size[0] + x) as usize)
@@ -169,6 +172,40 @@ pub(crate) struct Layout {
     len: usize,
     /// Per shape: the linear index of its padded box's low corner.
     origin: Vec<i64>,
+    /// Per shape: the grid slot of each cell.
+    slots: Vec<Vec<usize>>,
+}
+
+thread_local! {
+    /// Zeroed label grids for reuse, so a grid costs O(cells), not O(box).
+    static GRID_POOL: std::cell::RefCell<Vec<Vec<u16>>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// A shape's labels by address (see [`Layout::label_grid`]).
+///
+/// # Validity
+/// Only the slots of the shape's cells are non-zero; they are zeroed again on
+/// drop and the buffer goes back to a per-thread pool.
+pub(crate) struct LabelGrid<'a> {
+    grid: Vec<u16>,
+    slots: &'a [usize],
+}
+
+impl std::ops::Deref for LabelGrid<'_> {
+    type Target = [u16];
+    fn deref(&self) -> &[u16] {
+        &self.grid
+    }
+}
+
+impl Drop for LabelGrid<'_> {
+    fn drop(&mut self) {
+        for &s in self.slots {
+            self.grid[s] = 0;
+        }
+        let grid = std::mem::take(&mut self.grid);
+        GRID_POOL.with(|p| p.borrow_mut().push(grid));
+    }
 }
 
 impl Layout {
@@ -182,7 +219,10 @@ impl Layout {
             }
         }
         // Room for the largest piece around any centroid, plus rounding.
-        let pad: Vec<i64> = ext.iter().map(|e| if *e == 0 { 0 } else { e + modulus as i64 + 2 }).collect();
+        let pad: Vec<i64> = ext
+            .iter()
+            .map(|e| if *e == 0 { 0 } else { e + modulus as i64 + 2 })
+            .collect();
         let mut size = [1i64; 3];
         for (lo, hi) in &boxes {
             for d in 0..3 {
@@ -190,14 +230,21 @@ impl Layout {
             }
         }
         let stride = [1, size[0], size[0] * size[1]];
-        let origin = boxes
+        let origin: Vec<i64> = boxes
             .iter()
             .map(|(lo, _)| (0..3).map(|d| (lo[d] as i64 - pad[d]) * stride[d]).sum())
+            .collect();
+        let linear = |p: &Point| (0..3).map(|d| p[d] as i64 * stride[d]).sum::<i64>();
+        let slots = shapes
+            .iter()
+            .zip(&origin)
+            .map(|(s, o)| s.points.iter().map(|p| (linear(p) - o) as usize).collect())
             .collect();
         Layout {
             stride,
             len: (size[0] * size[1] * size[2]) as usize,
             origin,
+            slots,
         }
     }
 
@@ -213,11 +260,13 @@ impl Layout {
     }
 
     /// Labels of shape `f` by address: `label + 1` on its cells, 0 elsewhere.
-    pub(crate) fn label_grid(&self, f: usize, shape: &Shape, labels: &[u16]) -> Vec<u16> {
-        let mut grid = vec![0u16; self.len];
-        for (c, p) in shape.points.iter().enumerate() {
-            grid[(self.linear(*p) - self.origin[f]) as usize] = labels[c].wrapping_add(1);
+    pub(crate) fn label_grid<'a>(&'a self, f: usize, labels: &[u16]) -> LabelGrid<'a> {
+        let mut grid = GRID_POOL.with(|p| p.borrow_mut().pop()).unwrap_or_default();
+        grid.resize(self.len, 0);
+        let slots = &self.slots[f];
+        for (&slot, &l) in slots.iter().zip(labels) {
+            grid[slot] = l.wrapping_add(1);
         }
-        grid
+        LabelGrid { grid, slots }
     }
 }
