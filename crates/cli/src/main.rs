@@ -4,6 +4,7 @@ mod args;
 mod info;
 mod input;
 mod progress;
+mod serve;
 mod solve;
 mod verify;
 
@@ -35,6 +36,7 @@ fn main() -> ExitCode {
         args::Command::Solve(a) => solve::run(a),
         args::Command::Verify(a) => verify::run(a),
         args::Command::Info(a) => info::run(a),
+        args::Command::Serve(a) => serve::run(a),
     };
     match result {
         Ok(Status::Ok) => ExitCode::SUCCESS,

@@ -1,0 +1,67 @@
+//! `dissect serve`: the browser studio (crates/web) on 127.0.0.1.
+
+use std::io::Write;
+use std::net::{IpAddr, Ipv4Addr, SocketAddr};
+
+use anyhow::Result;
+use clap::Args;
+use dissect_web::Limits;
+
+use crate::{InputError, Status};
+
+#[derive(Args, Debug)]
+pub struct ServeArgs {
+    /// The port (0: any free port; the URL printed says which).
+    #[arg(long, default_value_t = 7878)]
+    pub port: u16,
+    /// The address to listen on. Anything but a loopback address exposes the
+    /// studio (and the machine's CPU) to the network.
+    #[arg(long, default_value_t = IpAddr::V4(Ipv4Addr::LOCALHOST))]
+    pub host: IpAddr,
+    /// The most cells a figure may have.
+    #[arg(long, default_value_t = Limits::default().max_cells(), value_name = "N")]
+    pub max_cells: usize,
+    /// The most solves running at once (more are refused with HTTP 429).
+    #[arg(long, default_value_t = Limits::default().max_concurrent_solves(), value_name = "N")]
+    pub max_solves: usize,
+    /// The longest time limit a solve may ask for, in seconds.
+    #[arg(long, default_value_t = Limits::default().max_time_limit(), value_name = "SECS")]
+    pub max_time_limit: f64,
+    /// Worker threads per solve (default: one per core).
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+}
+
+pub fn run(args: ServeArgs) -> Result<Status> {
+    if !(args.max_time_limit.is_finite() && args.max_time_limit > 0.0) {
+        return Err(InputError(format!(
+            "--max-time-limit must be a positive number of seconds, got {}",
+            args.max_time_limit
+        ))
+        .into());
+    }
+    let d = Limits::default();
+    let limits = Limits::new(
+        args.max_cells,
+        d.max_extent(),
+        d.max_figures(),
+        args.max_solves,
+        args.max_time_limit,
+        args.threads,
+    );
+    let addr = SocketAddr::new(args.host, args.port);
+    dissect_web::run_blocking(addr, limits, |bound| {
+        // The one line scripts read: where the studio is. Nothing is opened.
+        println!("http://{bound}");
+        let _ = std::io::stdout().flush();
+        if !bound.ip().is_loopback() {
+            eprintln!("dissect: warning: listening on {bound}, reachable from the network");
+        }
+        eprintln!("dissect: serving the studio; press Ctrl-C to stop");
+    })
+    .map_err(|e| match e {
+        dissect_web::ServeError::Bind { .. } => anyhow::Error::new(InputError(e.to_string())),
+        other => anyhow::Error::new(other),
+    })?;
+    Ok(Status::Ok)
+}
