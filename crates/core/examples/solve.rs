@@ -25,6 +25,8 @@ fn main() {
             "--explorations" => options.explorations = value().parse().expect("explorations"),
             "--iterations" => options.iterations = value().parse().expect("iterations"),
             "--max-pieces" => options.max_pieces = Some(value().parse().expect("max pieces")),
+            "--patience" => options.patience = value().parse().expect("patience"),
+            "--extra-rounds" => options.extra_rounds = value().parse().expect("extra rounds"),
             _ => paths.push(a),
         }
     }

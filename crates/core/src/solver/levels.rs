@@ -11,7 +11,7 @@ use rand::RngExt;
 use crate::piece::UNSET;
 use crate::solver::candidate::{Candidate, Problem, Score};
 use crate::solver::flood_fill::{flood_fill, Fallback};
-use crate::solver::refine::{mismatched_cells, refine};
+use crate::solver::refine::{mismatched_cells, refine_with_patience};
 use crate::solver::Options;
 
 /// `λ` at a level: `area_weight · 0.8^(ℓ−1)`.
@@ -46,7 +46,14 @@ pub(crate) fn level_one<R: rand::Rng>(
         labels.push(l);
     }
     let mut cand = Candidate { labels, k: 2 };
-    refine(problem, &mut cand, options.iterations, rng, stop);
+    refine_with_patience(
+        problem,
+        &mut cand,
+        options.iterations,
+        options.patience,
+        rng,
+        stop,
+    );
     let score = cand.evaluate(problem, lambda(options, 1), options.split_penalty);
     (cand, score)
 }
@@ -66,7 +73,14 @@ pub(crate) fn grow<R: rand::Rng>(
     if !split {
         piece_from_mismatches(problem, &mut cand, rng);
     }
-    refine(problem, &mut cand, options.iterations, rng, stop);
+    refine_with_patience(
+        problem,
+        &mut cand,
+        options.iterations,
+        options.patience,
+        rng,
+        stop,
+    );
     let score = cand.evaluate(problem, lambda(options, level), options.split_penalty);
     (cand, score)
 }

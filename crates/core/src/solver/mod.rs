@@ -58,6 +58,10 @@ pub struct Options {
     /// Extra rounds of `explorations` a level gets when its best candidate
     /// is a near miss (see [`Options::near_miss`]); 0 is the paper's schedule.
     pub extra_rounds: usize,
+    /// Stop refining an exploration whose conflicting cells have not
+    /// improved for this many iterations (0: the paper's loop, which stops
+    /// only when nothing changes).
+    pub patience: usize,
 }
 
 impl Options {
@@ -84,6 +88,7 @@ impl Default for Options {
             batch: 16,
             full_levels: false,
             extra_rounds: 1,
+            patience: 20,
         }
     }
 }

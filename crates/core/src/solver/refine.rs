@@ -160,7 +160,9 @@ pub(crate) fn mismatched_cells(problem: &Problem, cand: &mut Candidate) -> Vec<V
 
 /// Runs up to `iterations` refinement iterations (every figure once as the
 /// pivot). Stops early when nothing changes, when the candidate becomes a
-/// valid dissection, or when `stop` is raised.
+/// valid dissection, or when `stop` is raised. This is the paper's loop (the
+/// search itself calls [`refine_with_patience`]).
+#[cfg_attr(not(test), allow(dead_code))]
 pub(crate) fn refine<R: rand::Rng>(
     problem: &Problem,
     cand: &mut Candidate,
@@ -168,20 +170,48 @@ pub(crate) fn refine<R: rand::Rng>(
     rng: &mut R,
     stop: &AtomicBool,
 ) {
+    refine_with_patience(problem, cand, iterations, 0, rng, stop);
+}
+
+/// [`refine`], also stopping once the number of conflicting cells has not
+/// improved on its best for `patience` iterations (0: never). Random label
+/// switching keeps changing labels on a plateau, so without this a stuck
+/// exploration runs all its iterations for nothing.
+pub(crate) fn refine_with_patience<R: rand::Rng>(
+    problem: &Problem,
+    cand: &mut Candidate,
+    iterations: usize,
+    patience: usize,
+    rng: &mut R,
+    stop: &AtomicBool,
+) {
     let nfig = problem.shapes.len();
+    let mut best = usize::MAX;
+    let mut since_best = 0;
     for _ in 0..iterations {
         if stop.load(Ordering::Relaxed) {
             return;
         }
         let before = cand.labels.clone();
+        let mut total = 0;
         for pivot in 0..nfig {
             let conflicts = pivot_step(problem, cand, pivot, rng);
             if conflicts == 0 && all_connected(problem, cand) {
                 return;
             }
+            total += conflicts;
         }
         if cand.labels == before {
             return;
+        }
+        if total < best {
+            best = total;
+            since_best = 0;
+        } else {
+            since_best += 1;
+            if patience > 0 && since_best >= patience {
+                return;
+            }
         }
     }
 }
