@@ -17,11 +17,14 @@
 pub mod colour;
 
 pub mod drawing;
+mod ear_clipping;
 mod error;
 mod font;
+pub mod mesh;
 pub mod outline;
 pub mod png;
 pub mod scene;
+pub mod stl;
 pub mod svg;
 mod view;
 
