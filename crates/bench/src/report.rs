@@ -108,6 +108,11 @@ impl InstanceResult {
         median_worst(&self.runs.iter().map(|r| r.pieces).collect::<Vec<_>>())
     }
 
+    /// The fewest pieces any seed found.
+    pub fn best_pieces(&self) -> Option<usize> {
+        self.runs.iter().filter_map(|r| r.pieces).min()
+    }
+
     /// Median and worst time to the first valid dissection.
     pub fn first_valid(&self) -> Option<(Option<Duration>, Option<Duration>)> {
         median_worst(&self.runs.iter().map(|r| r.first_valid).collect::<Vec<_>>())
@@ -167,7 +172,7 @@ pub fn suite_table(results: &[InstanceResult], style: Style) -> String {
         "ref",
         "paper pieces",
         "paper time",
-        "pieces med / worst",
+        "pieces best / med / worst",
         "first valid s med / worst",
         "total s med / worst",
         "CPU s (med)",
@@ -196,7 +201,12 @@ pub fn suite_table(results: &[InstanceResult], style: Style) -> String {
                 r.paper
                     .map_or("-".to_string(), |p| format!("{} ({})", p.pieces, p.figure)),
                 r.paper.map_or("-".to_string(), |p| p.time.to_string()),
-                pair(r.pieces(), |v| v.to_string()),
+                format!(
+                    "{} / {}",
+                    r.best_pieces()
+                        .map_or("none".to_string(), |v| v.to_string()),
+                    pair(r.pieces(), |v| v.to_string())
+                ),
                 pair(r.first_valid(), secs),
                 pair(r.total(), secs),
                 median_cpu(&r.runs),

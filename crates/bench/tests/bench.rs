@@ -496,7 +496,7 @@ fn the_binary_runs_a_manifest_and_its_solutions_pass_verify_py() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{stdout}\n{stderr}");
     assert!(
-        stdout.contains("| l-to-bar | square | 4 | 2 | - | - | 2 / 2 | "),
+        stdout.contains("| l-to-bar | square | 4 | 2 | - | - | 2 / 2 / 2 | "),
         "{stdout}"
     );
     assert!(stdout.contains("| 2/2 |"), "{stdout}");
