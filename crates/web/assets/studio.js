@@ -188,7 +188,8 @@ function updateAreas() {
       .filter(Boolean)
       .join(', ');
     el.className = 'areas bad';
-    el.textContent = `✗ Areas differ by ${max - Math.min(...counts)} cells (${list}): ${diffs}`;
+    const diff = max - Math.min(...counts);
+    el.textContent = `✗ Areas differ by ${diff} cell${diff === 1 ? '' : 's'} (${list}): ${diffs}`;
   }
   $('#solve').disabled = !(equal && counts[0] > 0 && state.figures.length >= 2) || !!state.job;
 }
