@@ -11,9 +11,7 @@ use crate::distance::Geometry;
 use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind, Point};
 
-use super::util::{
-    candidate, candidate_of, geometry, matching, piece_points, rng, Cubic, Square, Tri4,
-};
+use super::util::{candidate, candidate_of, matching, piece_points, rng, Cubic, Square, Tri4};
 
 /// `D` between the single pieces written (with letter `A`) by `a` and `b`.
 fn check(lattice: LatticeKind, mirror: bool, a: &str, b: &str, expected: u32) {
@@ -186,12 +184,58 @@ fn hand_checked_values() {
     check(Cubic, false, "AA", "A", 1);
 }
 
+/// `D` between the pieces made of cells `a` and `b` (each its own figure)
+/// is the one of the definition.
+fn check_definition(lattice: LatticeKind, mirror: bool, a: &[Cell], b: &[Cell]) {
+    let parts: Vec<(Figure, Vec<u16>)> = [a, b]
+        .iter()
+        .map(|cells| {
+            let f = Figure::new(lattice, cells.iter().copied()).unwrap();
+            let n = f.len();
+            (f, vec![0; n])
+        })
+        .collect();
+    let (_, problem, cand) = candidate_of(lattice, mirror, parts);
+    let pts =
+        |f: usize| -> Vec<Point> { piece_points(&problem, &cand, f, 0).into_iter().collect() };
+    let want = reference_distance(&problem.geo, &pts(0), &pts(1));
+    let got = matching(&problem, &cand, 0, 1).dists[0];
+    assert_eq!(got, want, "D({a:?}, {b:?}) on {lattice}, mirror {mirror}");
+}
+
+/// Ignored: fails since c0834ef, for the reason given at
+/// [`transforms_reach_the_distance`]: when every figure is one cell wide in
+/// x, `Layout::new` pads x by 0, so a point moved by ±1 in x aliases the
+/// point ±1 in y and counts as a hit. E.g. square `.|.|.|A|A` against
+/// `A|.|.|A` gives D = 2; the definition (and 89ef82a) gives 4.
+#[test]
+#[ignore = "distance counts false hits on one-cell-wide figures (linear grid aliasing since c0834ef)"]
+fn distance_follows_its_definition_on_thin_figures() {
+    check_definition(
+        Square,
+        true,
+        &[[0, 3, 0], [0, 4, 0]],
+        &[[0, 0, 0], [0, 3, 0]],
+    );
+    check_definition(
+        Square,
+        false,
+        &[[0, 0, 0], [0, 5, 0]],
+        &[[0, 0, 0], [0, 3, 0]],
+    );
+    check_definition(
+        Square,
+        true,
+        &[[0, 1, 0], [0, 4, 0], [0, 5, 0]],
+        &[[0, 0, 0], [0, 1, 0]],
+    );
+}
+
 #[test]
 fn distance_follows_its_definition_on_random_pieces() {
     let mut r = rng(2024);
     for lattice in LatticeKind::ALL {
         for mirror in [true, false] {
-            let geo = geometry(lattice, mirror);
             for _ in 0..150 {
                 let offset = [r.random_range(-9..9), r.random_range(-9..9), 0];
                 let start = match lattice {
@@ -201,21 +245,7 @@ fn distance_follows_its_definition_on_random_pieces() {
                 };
                 let a = random_piece(lattice, [0, 0, 0], 7, &mut r);
                 let b = random_piece(lattice, start, 7, &mut r);
-                let parts: Vec<(Figure, Vec<u16>)> = [&a, &b]
-                    .iter()
-                    .map(|cells| {
-                        let f = Figure::new(lattice, cells.iter().copied()).unwrap();
-                        let n = f.len();
-                        (f, vec![0; n])
-                    })
-                    .collect();
-                let (_, problem, cand) = candidate_of(lattice, mirror, parts);
-                let pts = |f: usize| -> Vec<Point> {
-                    piece_points(&problem, &cand, f, 0).into_iter().collect()
-                };
-                let want = reference_distance(&geo, &pts(0), &pts(1));
-                let got = matching(&problem, &cand, 0, 1).dists[0];
-                assert_eq!(got, want, "D({a:?}, {b:?}) on {lattice}, mirror {mirror}");
+                check_definition(lattice, mirror, &a, &b);
             }
         }
     }

@@ -38,13 +38,16 @@ fn run(figures: &[Figure], options: &Options) -> Outcome {
     outcome
 }
 
-fn dissection_of(lattice: LatticeKind, mirror: bool, found: &Found) -> Dissection {
+fn dissection_of(
+    lattice: LatticeKind,
+    mirror: bool,
+    found: &Found,
+    names: Vec<String>,
+) -> Dissection {
     Dissection {
         lattice,
         mirror,
-        names: (0..found.pieces.len())
-            .map(|i| format!("f{i}.txt"))
-            .collect(),
+        names,
         pieces: found.pieces.clone(),
     }
 }
@@ -67,7 +70,8 @@ fn check(
     let found = outcome
         .found
         .unwrap_or_else(|| panic!("no dissection of {compact:?} on {lattice}"));
-    let d = dissection_of(lattice, mirror && lattice != Cubic, &found);
+    let names = (0..compact.len()).map(|i| format!("f{i}.txt")).collect();
+    let d = dissection_of(lattice, mirror && lattice != Cubic, &found, names);
     assert_eq!(
         verify(&d, &figures),
         Ok(found.piece_count()),
@@ -273,12 +277,15 @@ fn solutions_pass_the_python_verifier() {
     for (n, (lattice, mirror, compact)) in cases.into_iter().enumerate() {
         let found = check(lattice, mirror, compact, 1, 8);
         let mut paths = Vec::new();
+        let mut names = Vec::new();
         for (i, c) in compact.iter().enumerate() {
-            let p = work.join(format!("case{n}-f{i}.txt"));
+            let name = format!("case{n}-f{i}.txt");
+            let p = work.join(&name);
             std::fs::write(&p, super::util::text(c)).unwrap();
             paths.push(p);
+            names.push(name);
         }
-        let d = dissection_of(lattice, mirror && lattice != Cubic, &found);
+        let d = dissection_of(lattice, mirror && lattice != Cubic, &found, names);
         let sol = work.join(format!("case{n}-solution.json"));
         std::fs::write(&sol, d.to_file(serde_json::Map::new()).to_json()).unwrap();
         let out = Command::new("python3")
@@ -289,6 +296,8 @@ fn solutions_pass_the_python_verifier() {
             .output()
             .expect("run verify.py");
         let stdout = String::from_utf8_lossy(&out.stdout);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!stderr.contains("warning"), "case {n}: {stderr}");
         assert!(
             out.status.success(),
             "verify.py rejected case {n}: {stdout}{}",
