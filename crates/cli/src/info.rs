@@ -52,7 +52,11 @@ pub fn run(args: InfoArgs) -> Result<Status> {
                     *a as i64 - lo as i64
                 );
             }
-            println!("  largest difference: {} cells", hi - lo);
+            println!(
+                "  largest difference: {} cell{}",
+                hi - lo,
+                if hi - lo == 1 { "" } else { "s" }
+            );
         }
     }
     Ok(Status::Ok)

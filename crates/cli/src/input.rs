@@ -1,9 +1,12 @@
-//! Reading figure and solution files, with errors that name the file.
+//! Reading figure and solution files, with errors that name the file (and
+//! the line and column where the problem is at one place).
 
 use std::path::Path;
 
 use anyhow::Result;
-use dissect_core::io::{parse_figure, parse_solution, Dissection, SolutionFile};
+use dissect_core::io::{
+    parse_figure, parse_solution, Dissection, ParseErrorKind, SolutionError, SolutionFile,
+};
 use dissect_core::{Figure, LatticeKind};
 
 use crate::InputError;
@@ -24,7 +27,17 @@ fn read(path: &Path) -> Result<String> {
 /// Reads one figure file.
 pub fn figure(path: &Path, lattice: LatticeKind) -> Result<Figure> {
     let text = read(path)?;
-    parse_figure(&text, lattice).map_err(|e| InputError(format!("{}: {e}", path.display())).into())
+    parse_figure(&text, lattice).map_err(|e| {
+        let hint = match e.kind {
+            ParseErrorKind::UnexpectedChar { found, .. }
+                if lattice != LatticeKind::Tri4 && found.is_ascii_hexdigit() =>
+            {
+                " (hex digits are tri4 cells: is this a tri4 figure? then use --lattice tri4)"
+            }
+            _ => "",
+        };
+        InputError(format!("{}: {e}{hint}", path.display())).into()
+    })
 }
 
 /// Reads figure files.
@@ -42,13 +55,72 @@ pub fn check_equal_areas(paths: &[impl AsRef<Path>], figures: &[Figure]) -> Resu
         .zip(figures)
         .map(|(p, f)| format!("{}: {} cells", p.as_ref().display(), f.len()))
         .collect();
-    Err(InputError(format!("figures have different areas: {}", list.join(", "))).into())
+    Err(InputError(format!(
+        "figures have different areas (a dissection needs equal cell counts): {}",
+        list.join(", ")
+    ))
+    .into())
+}
+
+/// Fails unless `path` can be created or overwritten as a file: its folder
+/// exists and it is not a folder itself. Checked before a long search so
+/// that its result is not lost to a typo.
+pub fn check_writable(path: &Path) -> Result<()> {
+    if path.is_dir() {
+        return Err(InputError(format!(
+            "{}: cannot write the solution: it is a folder",
+            path.display()
+        ))
+        .into());
+    }
+    let parent = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    if !parent.is_dir() {
+        return Err(InputError(format!(
+            "{}: cannot write the solution: folder {} does not exist",
+            path.display(),
+            parent.display()
+        ))
+        .into());
+    }
+    Ok(())
 }
 
 /// Reads a solution file.
 pub fn solution(path: &Path) -> Result<(SolutionFile, Dissection)> {
     let text = read(path)?;
-    parse_solution(&text).map_err(|e| InputError(format!("{}: {e}", path.display())).into())
+    parse_solution(&text).map_err(|e| {
+        let message = match &e {
+            SolutionError::BadCell { lattice, .. } => match bad_cell::locate(&text, *lattice) {
+                Some((line, column)) => format!(
+                    "line {line}, column {column}: {e} (a {lattice} cell is {})",
+                    bad_cell::form(*lattice)
+                ),
+                None => format!("{e} (a {lattice} cell is {})", bad_cell::form(*lattice)),
+            },
+            _ => e.to_string(),
+        };
+        InputError(format!("{}: {message}", path.display())).into()
+    })
+}
+
+/// Fails when a lattice asked for on the command line is not the
+/// solution's.
+pub fn check_solution_lattice(
+    path: &Path,
+    solution: LatticeKind,
+    asked: Option<LatticeKind>,
+) -> Result<()> {
+    match asked {
+        Some(l) if l != solution => Err(InputError(format!(
+            "{}: the solution is on the {solution} lattice, but --lattice {l} was given",
+            path.display()
+        ))
+        .into()),
+        _ => Ok(()),
+    }
 }
 
 /// The file name shown in solutions (`name` key).
@@ -57,4 +129,83 @@ pub fn file_name(path: &Path) -> String {
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     )
+}
+
+/// Finds where a cell of the wrong shape is in a solution text: a second
+/// reading of `figures[*].pieces[*][*]` that fails at the first bad cell, so
+/// that serde_json reports its line and column.
+mod bad_cell {
+    use std::cell::Cell;
+
+    use dissect_core::LatticeKind;
+    use serde::de::{Deserialize, Deserializer, Error};
+
+    thread_local! {
+        /// The lattice whose cells are expected (serde has no other way to
+        /// pass it to a derived reader).
+        static LATTICE: Cell<LatticeKind> = const { Cell::new(LatticeKind::Square) };
+    }
+
+    #[derive(serde::Deserialize)]
+    struct Document {
+        #[allow(dead_code)] // read only for its checks
+        figures: Vec<Figure>,
+    }
+
+    #[derive(serde::Deserialize)]
+    struct Figure {
+        #[allow(dead_code)] // read only for its checks
+        pieces: Vec<Vec<CheckedCell>>,
+    }
+
+    struct CheckedCell;
+
+    impl<'de> Deserialize<'de> for CheckedCell {
+        fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            let v = Vec::<i64>::deserialize(d)?;
+            let lattice = LATTICE.with(Cell::get);
+            let arity = if lattice == LatticeKind::Square { 2 } else { 3 };
+            let fits = v.len() == arity
+                && v.iter().all(|c| i32::try_from(*c).is_ok())
+                && (lattice != LatticeKind::Tri4 || (0..4).contains(&v[2]));
+            if fits {
+                Ok(CheckedCell)
+            } else {
+                Err(D::Error::custom("bad cell"))
+            }
+        }
+    }
+
+    /// The 1-based line and column of the `[` that opens the first bad cell.
+    pub fn locate(text: &str, lattice: LatticeKind) -> Option<(usize, usize)> {
+        LATTICE.with(|l| l.set(lattice));
+        let e = serde_json::from_str::<Document>(text).err()?;
+        if e.line() == 0 {
+            return None;
+        }
+        // serde_json stops just after the cell's `]`; a cell holds only
+        // numbers, so its `[` is the last one before that.
+        let line_start: usize = text
+            .split_inclusive('\n')
+            .take(e.line() - 1)
+            .map(str::len)
+            .sum();
+        let end = text[line_start..]
+            .char_indices()
+            .nth(e.column().saturating_sub(1))
+            .map_or(text.len(), |(i, _)| line_start + i);
+        let open = text[..end].rfind('[')?;
+        let line = text[..open].matches('\n').count() + 1;
+        let from = text[..open].rfind('\n').map_or(0, |i| i + 1);
+        Some((line, text[from..open].chars().count() + 1))
+    }
+
+    /// How a cell of `lattice` is written.
+    pub fn form(lattice: LatticeKind) -> &'static str {
+        match lattice {
+            LatticeKind::Square => "[x, y]",
+            LatticeKind::Tri4 => "[x, y, t] with t in 0..=3",
+            LatticeKind::Cubic => "[x, y, z]",
+        }
+    }
 }

@@ -70,6 +70,10 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         }
     });
     let start = Instant::now();
+    if args.time_limit == Some(0.0) {
+        // No time at all: stop before the timer thread would have started.
+        STOP.store(true, Ordering::SeqCst);
+    }
     let finished = Arc::new((Mutex::new(false), Condvar::new()));
     let timer = args.time_limit.map(|secs| {
         let finished = Arc::clone(&finished);

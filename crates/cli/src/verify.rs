@@ -1,29 +1,62 @@
 //! `dissect verify`.
 
 use anyhow::Result;
+use dissect_core::verify::Violation;
 
 use crate::args::VerifyArgs;
 use crate::{input, Status};
 
 pub fn run(args: VerifyArgs) -> Result<Status> {
     let (_, dissection) = input::solution(&args.solution)?;
-    let lattice = args.lattice.unwrap_or(dissection.lattice);
+    input::check_solution_lattice(&args.solution, dissection.lattice, args.lattice)?;
+    let lattice = dissection.lattice;
     let figures = input::figures(&args.figures, lattice)?;
     input::check_equal_areas(&args.figures, &figures)?;
     match dissect_core::verify::verify(&dissection, &figures) {
         Ok(n) => {
-            println!("valid: {n} pieces");
+            println!("valid: {n} piece{}", if n == 1 { "" } else { "s" });
             Ok(Status::Ok)
         }
         Err(violations) => {
             for v in violations.iter().take(10) {
-                println!("{v}");
+                match figure_of(v).and_then(|f| args.figures.get(f)) {
+                    Some(path) => println!("{}: {v}", path.display()),
+                    None => println!("{v}"),
+                }
             }
             if violations.len() > 10 {
                 println!("... {} more", violations.len() - 10);
             }
-            println!("invalid: {} problem(s)", violations.len());
+            let given: Vec<String> = args.figures.iter().map(|p| input::file_name(p)).collect();
+            if dissection.names.iter().all(|n| !n.is_empty())
+                && dissection.names != given
+                && dissection.names.len() == given.len()
+            {
+                println!(
+                    "note: the solution lists the figures {}; they were given as {}",
+                    dissection.names.join(", "),
+                    given.join(", ")
+                );
+            }
+            println!(
+                "invalid: {} problem{}",
+                violations.len(),
+                if violations.len() == 1 { "" } else { "s" }
+            );
             Ok(Status::NotFound)
         }
+    }
+}
+
+/// The index of the figure a violation is about, if it is about one.
+fn figure_of(v: &Violation) -> Option<usize> {
+    match v {
+        Violation::EmptyPiece { figure, .. }
+        | Violation::Overlap { figure, .. }
+        | Violation::OutsideFigure { figure, .. }
+        | Violation::Uncovered { figure, .. }
+        | Violation::Disconnected { figure, .. }
+        | Violation::NotCongruent { figure, .. } => Some(*figure),
+        _ => None,
     }
 }
