@@ -1,0 +1,26 @@
+//! End-to-end tests of the `dissect` binary: exit codes, error messages,
+//! stopping (time limit, Ctrl-C), reproducibility, output and display.
+//!
+//! One test binary; every test runs the built binary in its own temporary
+//! folder (see `support`), and every solution it writes is checked by
+//! `dissect verify`, and in several tests by `shared/tools/verify.py` too.
+
+#[path = "cli/support.rs"]
+mod support;
+
+#[path = "cli/bad_input.rs"]
+mod bad_input;
+#[path = "cli/display.rs"]
+mod display;
+#[path = "cli/exit_codes.rs"]
+mod exit_codes;
+#[path = "cli/info.rs"]
+mod info;
+#[path = "cli/output.rs"]
+mod output;
+#[path = "cli/reproducibility.rs"]
+mod reproducibility;
+#[path = "cli/stopping.rs"]
+mod stopping;
+#[path = "cli/verify.rs"]
+mod verify;

@@ -1,0 +1,322 @@
+//! Running the built `dissect` binary in a temporary folder, and checking
+//! what it wrote.
+
+use std::io::{BufRead, BufReader};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use tempfile::TempDir;
+
+/// The `shared/` folder beside the repository.
+pub fn shared() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared")
+}
+
+/// A figure file of a shared benchmark instance.
+pub fn instance(name: &str, file: &str) -> PathBuf {
+    let p = shared().join("instances").join(name).join(file);
+    assert!(p.is_file(), "missing shared instance file {}", p.display());
+    p
+}
+
+/// What one run of the binary did.
+#[derive(Debug)]
+pub struct Run {
+    /// The exit code (`None` when killed by a signal).
+    pub code: Option<i32>,
+    pub stdout: String,
+    pub stderr: String,
+    pub elapsed: Duration,
+}
+
+impl Run {
+    /// Asserts the exit code, showing the run's output when it differs.
+    #[track_caller]
+    pub fn expect_code(&self, code: i32) -> &Run {
+        assert_eq!(
+            self.code,
+            Some(code),
+            "expected exit code {code}\n--- stdout\n{}\n--- stderr\n{}",
+            clip(&self.stdout),
+            clip(&self.stderr)
+        );
+        self
+    }
+
+    /// Asserts that stderr contains every piece of text.
+    #[track_caller]
+    pub fn stderr_has(&self, parts: &[&str]) -> &Run {
+        for p in parts {
+            assert!(
+                self.stderr.contains(p),
+                "stderr lacks {p:?}\n--- stderr\n{}",
+                clip(&self.stderr)
+            );
+        }
+        self
+    }
+
+    /// Asserts that stdout contains every piece of text.
+    #[track_caller]
+    pub fn stdout_has(&self, parts: &[&str]) -> &Run {
+        for p in parts {
+            assert!(
+                self.stdout.contains(p),
+                "stdout lacks {p:?}\n--- stdout\n{}",
+                clip(&self.stdout)
+            );
+        }
+        self
+    }
+}
+
+/// At most the first 40 lines of an output, for failure messages.
+pub fn clip(text: &str) -> String {
+    let lines: Vec<&str> = text.lines().collect();
+    if lines.len() <= 40 {
+        return text.to_string();
+    }
+    format!(
+        "{}\n... ({} more lines)",
+        lines[..40].join("\n"),
+        lines.len() - 40
+    )
+}
+
+/// A temporary working folder for the binary.
+pub struct Sandbox {
+    dir: TempDir,
+}
+
+impl Sandbox {
+    pub fn new() -> Sandbox {
+        Sandbox {
+            dir: tempfile::tempdir().expect("temporary folder"),
+        }
+    }
+
+    /// A path inside the sandbox.
+    pub fn path(&self, name: &str) -> PathBuf {
+        self.dir.path().join(name)
+    }
+
+    /// Writes a file (a figure drawn as text, a solution ...) and returns
+    /// its name, relative to the sandbox.
+    pub fn write(&self, name: &str, text: &str) -> String {
+        std::fs::write(self.path(name), text).expect("write test file");
+        name.to_string()
+    }
+
+    /// Copies a shared instance's figure into the sandbox under `as_name`.
+    pub fn copy_instance(&self, name: &str, file: &str, as_name: &str) -> String {
+        std::fs::copy(instance(name, file), self.path(as_name)).expect("copy instance");
+        as_name.to_string()
+    }
+
+    /// Reads a file the binary wrote.
+    pub fn read(&self, name: &str) -> String {
+        std::fs::read_to_string(self.path(name))
+            .unwrap_or_else(|e| panic!("cannot read {name}: {e}"))
+    }
+
+    /// The binary, ready to run in the sandbox without a terminal.
+    pub fn command(&self, args: &[&str]) -> Command {
+        let mut c = Command::new(env!("CARGO_BIN_EXE_dissect"));
+        c.args(args)
+            .current_dir(self.dir.path())
+            .stdin(Stdio::null())
+            .env_remove("RUST_BACKTRACE");
+        c
+    }
+
+    /// Runs the binary to its end. Panics if it panicked.
+    pub fn run(&self, args: &[&str]) -> Run {
+        let start = Instant::now();
+        let out = self.command(args).output().expect("run dissect");
+        let run = Run {
+            code: out.status.code(),
+            stdout: String::from_utf8(out.stdout).expect("UTF-8 stdout"),
+            stderr: String::from_utf8(out.stderr).expect("UTF-8 stderr"),
+            elapsed: start.elapsed(),
+        };
+        assert_no_panic(&run);
+        run
+    }
+
+    /// Starts the binary with piped output; returns it once it has printed
+    /// its first line on stderr (so its Ctrl-C handler is in place), with
+    /// that line.
+    pub fn spawn_until_first_line(&self, args: &[&str]) -> Running {
+        let start = Instant::now();
+        let mut child = self
+            .command(args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("start dissect");
+        let (tx, rx) = std::sync::mpsc::channel();
+        let stderr = child.stderr.take().expect("piped stderr");
+        let reader = std::thread::spawn(move || {
+            let mut all = String::new();
+            for line in BufReader::new(stderr).lines() {
+                let line = line.expect("UTF-8 stderr");
+                let _ = tx.send(line.clone());
+                all += &line;
+                all.push('\n');
+            }
+            all
+        });
+        let first = rx
+            .recv_timeout(Duration::from_secs(20))
+            .expect("a first progress line on stderr");
+        Running {
+            child,
+            reader,
+            start,
+            first,
+        }
+    }
+}
+
+/// A binary started by [`Sandbox::spawn_until_first_line`].
+pub struct Running {
+    child: Child,
+    reader: std::thread::JoinHandle<String>,
+    start: Instant,
+    pub first: String,
+}
+
+impl Running {
+    /// Sends a signal (`INT`, `TERM`) with the system's `kill`.
+    pub fn signal(&self, name: &str) {
+        let ok = Command::new("kill")
+            .arg(format!("-{name}"))
+            .arg(self.child.id().to_string())
+            .status()
+            .expect("run kill");
+        assert!(ok.success(), "kill -{name} failed");
+    }
+
+    /// Waits for the end, at most `limit` (then kills it and fails).
+    pub fn wait(mut self, limit: Duration) -> Run {
+        let signalled = Instant::now();
+        let status = loop {
+            if let Some(s) = self.child.try_wait().expect("wait for dissect") {
+                break s;
+            }
+            if signalled.elapsed() > limit {
+                let _ = self.child.kill();
+                let _ = self.child.wait();
+                panic!("dissect did not stop within {limit:?}");
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        };
+        let elapsed = self.start.elapsed();
+        let mut stdout = String::new();
+        if let Some(mut o) = self.child.stdout.take() {
+            std::io::Read::read_to_string(&mut o, &mut stdout).expect("UTF-8 stdout");
+        }
+        let stderr = self.first.clone() + "\n" + &self.reader.join().expect("stderr reader");
+        let run = Run {
+            code: status.code(),
+            stdout,
+            stderr,
+            elapsed,
+        };
+        assert_no_panic(&run);
+        run
+    }
+}
+
+#[track_caller]
+fn assert_no_panic(run: &Run) {
+    assert!(
+        !run.stderr.contains("panicked") && !run.stdout.contains("panicked"),
+        "dissect panicked:\n{}",
+        clip(&run.stderr)
+    );
+    assert_ne!(run.code, Some(101), "exit code 101 is a panic");
+}
+
+/// Parses a solution file the binary wrote.
+pub fn json(text: &str) -> serde_json::Value {
+    serde_json::from_str(text).unwrap_or_else(|e| panic!("bad JSON ({e}):\n{text}"))
+}
+
+/// The number of pieces of a solution JSON (checking that every figure
+/// lists the same number).
+pub fn piece_count(solution: &serde_json::Value) -> usize {
+    let figs = solution["figures"].as_array().expect("figures array");
+    let counts: Vec<usize> = figs
+        .iter()
+        .map(|f| f["pieces"].as_array().expect("pieces array").len())
+        .collect();
+    assert!(counts.iter().all(|c| *c == counts[0]), "{counts:?}");
+    counts[0]
+}
+
+/// Checks a written solution with `dissect verify` and with the
+/// independent `shared/tools/verify.py`; returns the piece count.
+#[track_caller]
+pub fn assert_valid(sb: &Sandbox, lattice: &str, solution: &str, figures: &[&str]) -> usize {
+    let mut args = vec!["verify", "--lattice", lattice, "--solution", solution];
+    args.extend_from_slice(figures);
+    let run = sb.run(&args);
+    run.expect_code(0);
+    let n = piece_count(&json(&sb.read(solution)));
+    assert_eq!(
+        run.stdout.trim(),
+        format!("valid: {n} piece{}", if n == 1 { "" } else { "s" })
+    );
+
+    let out = Command::new("python3")
+        .arg(shared().join("tools/verify.py"))
+        .args(["--lattice", lattice, "--solution", solution])
+        .args(figures)
+        .current_dir(sb.path("."))
+        .output()
+        .expect("python3 runs shared/tools/verify.py");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "verify.py rejects {solution}:\n{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout.contains(&format!("valid: {n} pieces")),
+        "verify.py says:\n{stdout}"
+    );
+    n
+}
+
+/// Compares `actual` with the golden file `tests/golden/<name>`; with
+/// `UPDATE_GOLDEN=1` in the environment, (re)writes the file instead.
+#[track_caller]
+pub fn golden(name: &str, actual: &str) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/golden")
+        .join(name);
+    if std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1") {
+        std::fs::write(&path, actual).expect("write golden file");
+        return;
+    }
+    let expected = std::fs::read_to_string(&path).unwrap_or_else(|e| {
+        panic!(
+            "cannot read golden file {} ({e}); run with UPDATE_GOLDEN=1 to create it",
+            path.display()
+        )
+    });
+    if expected != actual {
+        let first = expected
+            .lines()
+            .zip(actual.lines())
+            .position(|(a, b)| a != b)
+            .unwrap_or(expected.lines().count().min(actual.lines().count()));
+        panic!(
+            "output differs from golden file {} from line {} on (UPDATE_GOLDEN=1 rewrites it)\n--- expected\n{expected}\n--- actual\n{actual}",
+            path.display(),
+            first + 1
+        );
+    }
+}
