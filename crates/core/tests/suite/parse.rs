@@ -215,3 +215,35 @@ fn format_moves_the_figure_to_the_origin() {
     let h = fig(Tri4, "..|.4");
     assert_eq!(format_figure(&h), "4\n");
 }
+
+/// Random texts over the characters that matter never make the parser
+/// panic, and every error points inside the text.
+#[test]
+fn random_texts_never_panic() {
+    use rand::{RngExt, SeedableRng};
+    let alphabet: Vec<char> = "#.#.#. 0F9c\n\n\r\t\u{e9}x".chars().collect();
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+    for _ in 0..3000 {
+        let len = rng.random_range(0..24);
+        let text: String = (0..len)
+            .map(|_| alphabet[rng.random_range(0..alphabet.len())])
+            .collect();
+        for lattice in LatticeKind::ALL {
+            match parse_figure(&text, lattice) {
+                Ok(f) => assert!(!f.cells().is_empty()),
+                Err(e) => {
+                    let lines: Vec<&str> = text.split('\n').collect();
+                    if e.line > 0 {
+                        assert!(e.line <= lines.len(), "{text:?}: {e}");
+                        let row = lines[e.line - 1];
+                        let row = row.strip_suffix('\r').unwrap_or(row);
+                        assert!(e.column <= row.chars().count(), "{text:?}: {e}");
+                        if let ParseErrorKind::UnexpectedChar { found, .. } = e.kind {
+                            assert_eq!(row.chars().nth(e.column - 1), Some(found), "{text:?}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

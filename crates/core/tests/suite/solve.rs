@@ -157,6 +157,22 @@ fn cubic_three_figures() {
 }
 
 #[test]
+fn other_settings() {
+    // No area term, every exploration of the last level, mirror off.
+    let figures = [fig(Square, "###|#.#|###"), fig(Square, "####|####")];
+    let options = Options {
+        area_weight: 0.0,
+        full_levels: true,
+        mirror: false,
+        ..small(5, 2)
+    };
+    let outcome = run(&figures, &options);
+    let found = outcome.found.expect("a dissection");
+    let d = dissection_of(Square, false, &found, vec!["a".into(), "b".into()]);
+    assert_eq!(verify(&d, &figures), Ok(found.piece_count()));
+}
+
+#[test]
 fn congruent_figures_are_one_piece() {
     let found = check(Square, false, &["##.|.##", ".#|##|#."], 1, 1);
     assert_eq!(found.level, 0);
@@ -247,6 +263,12 @@ fn bad_input_is_an_error() {
     assert_eq!(
         solve(&[sq.clone(), fig(Cubic, "##")], &o, &stop, &()),
         Err(SolveError::MixedLattices(Square, Cubic))
+    );
+    let big = |w: i32| Figure::new(Square, (0..w).flat_map(|x| (0..5).map(move |y| [x, y, 0])));
+    let (a, b) = (big(13_001).unwrap(), big(13_001).unwrap());
+    assert_eq!(
+        solve(&[a, b], &o, &stop, &()),
+        Err(SolveError::TooLarge(65_005))
     );
 }
 
