@@ -1,0 +1,382 @@
+//! The exact mode against a brute-force enumeration of every partition of
+//! small figures into connected pieces, on every lattice. Every dissection
+//! the SAT search reports is checked by `dissect_core::verify`, and one by
+//! the independent Python checker of `shared/tools/verify.py`.
+
+use std::collections::HashSet;
+use std::sync::atomic::{AtomicBool, AtomicUsize};
+
+use dissect_core::figure::components_of;
+use dissect_core::io::{parse_figure, Dissection};
+use dissect_core::lattice::Point;
+use dissect_core::{Cell, Figure, LatticeKind};
+use dissect_exact::{cheap_bound, search, ExactOptions, ExactOutcome, Mode, Reason};
+
+fn figures(lattice: LatticeKind, texts: &[&str]) -> Vec<Figure> {
+    texts
+        .iter()
+        .map(|t| parse_figure(t, lattice).expect("test figure parses"))
+        .collect()
+}
+
+fn run(figs: &[Figure], mirror: bool, mode: Mode, max_pieces: Option<usize>) -> ExactOutcome {
+    let options = ExactOptions {
+        mirror,
+        mode,
+        max_pieces,
+        ..ExactOptions::default()
+    };
+    let stop = AtomicBool::new(false);
+    let upper = AtomicUsize::new(usize::MAX);
+    search(figs, &options, &stop, &upper, &()).expect("search runs")
+}
+
+// ---------------------------------------------------------------------------
+// Brute force: every partition of the first figure into connected pieces, in
+// order of piece count; a partition works when every other figure can be
+// tiled by its pieces (each once, under any allowed motion).
+
+struct Brute {
+    lattice: LatticeKind,
+    syms: Vec<dissect_core::lattice::Symmetry>,
+}
+
+impl Brute {
+    fn new(lattice: LatticeKind, mirror: bool) -> Brute {
+        let l = lattice.lattice();
+        Brute {
+            lattice,
+            syms: l.symmetries(mirror && l.supports_mirror()),
+        }
+    }
+
+    fn is_translation(&self, t: Point) -> bool {
+        let l = self.lattice.lattice();
+        (0..3).all(|k| {
+            if k < l.dim() {
+                t[k].rem_euclid(l.modulus()) == 0
+            } else {
+                t[k] == 0
+            }
+        })
+    }
+
+    /// The fewest connected pieces, with one partition of the first figure.
+    fn minimum(&self, figs: &[Figure]) -> (usize, Vec<Vec<Cell>>) {
+        let cells = figs[0].cells();
+        let n = cells.len();
+        assert!(n <= 9, "brute force is for small figures");
+        for k in 1..=n {
+            let mut labels = vec![0usize; n];
+            if let Some(p) = self.partitions(figs, &mut labels, 0, 0, k) {
+                return (k, p);
+            }
+        }
+        unreachable!("single cells always work")
+    }
+
+    /// Restricted growth strings with exactly `k` labels.
+    fn partitions(
+        &self,
+        figs: &[Figure],
+        labels: &mut Vec<usize>,
+        i: usize,
+        used: usize,
+        k: usize,
+    ) -> Option<Vec<Vec<Cell>>> {
+        let n = labels.len();
+        if n - i < k - used {
+            return None;
+        }
+        if i == n {
+            let cells = figs[0].cells();
+            let pieces: Vec<Vec<Cell>> = (0..k)
+                .map(|p| {
+                    (0..n)
+                        .filter(|&c| labels[c] == p)
+                        .map(|c| cells[c])
+                        .collect()
+                })
+                .collect();
+            let connected = pieces
+                .iter()
+                .all(|p| components_of(self.lattice, p).len() == 1);
+            let works = connected && figs[1..].iter().all(|f| self.tiles(f, &pieces));
+            return works.then_some(pieces);
+        }
+        for l in 0..=used.min(k - 1) {
+            labels[i] = l;
+            let next = if l == used { used + 1 } else { used };
+            if let Some(p) = self.partitions(figs, labels, i + 1, next, k) {
+                return Some(p);
+            }
+        }
+        None
+    }
+
+    fn tiles(&self, fig: &Figure, pieces: &[Vec<Cell>]) -> bool {
+        let l = self.lattice.lattice();
+        let target: Vec<Point> = fig.cells().iter().map(|c| l.to_point(*c)).collect();
+        let shapes: Vec<Vec<Point>> = pieces
+            .iter()
+            .map(|p| p.iter().map(|c| l.to_point(*c)).collect())
+            .collect();
+        let mut free: HashSet<Point> = target.iter().copied().collect();
+        let mut used = vec![false; shapes.len()];
+        self.place(&mut free, &shapes, &mut used)
+    }
+
+    fn place(&self, free: &mut HashSet<Point>, shapes: &[Vec<Point>], used: &mut [bool]) -> bool {
+        let Some(&first) = free.iter().min() else {
+            return true;
+        };
+        for s in 0..shapes.len() {
+            if used[s] {
+                continue;
+            }
+            for g in &self.syms {
+                let img: Vec<Point> = shapes[s].iter().map(|p| g.apply(*p)).collect();
+                for anchor in &img {
+                    let t = [
+                        first[0] - anchor[0],
+                        first[1] - anchor[1],
+                        first[2] - anchor[2],
+                    ];
+                    if !self.is_translation(t) {
+                        continue;
+                    }
+                    let moved: Vec<Point> = img
+                        .iter()
+                        .map(|p| [p[0] + t[0], p[1] + t[1], p[2] + t[2]])
+                        .collect();
+                    if moved.iter().all(|p| free.contains(p)) {
+                        for p in &moved {
+                            free.remove(p);
+                        }
+                        used[s] = true;
+                        if self.place(free, shapes, used) {
+                            return true;
+                        }
+                        used[s] = false;
+                        for p in &moved {
+                            free.insert(*p);
+                        }
+                    }
+                }
+            }
+        }
+        false
+    }
+}
+
+/// The exact answer agrees with brute force; the lower bound proved by SAT
+/// below it is exactly the brute-force minimum; the cheap bound is below it.
+fn check(lattice: LatticeKind, mirror: bool, texts: &[&str]) -> usize {
+    let figs = figures(lattice, texts);
+    let (brute, partition) = Brute::new(lattice, mirror).minimum(&figs);
+    assert!(
+        components_of(lattice, &partition[0]).len() == 1,
+        "brute force returns connected pieces"
+    );
+
+    let cheap = cheap_bound(&figs, mirror).expect("valid figures");
+    assert!(
+        cheap.value <= brute,
+        "cheap bound {cheap} exceeds the minimum {brute}"
+    );
+
+    let exact = run(&figs, mirror, Mode::Minimum, None);
+    let found = exact
+        .found
+        .clone()
+        .expect("the exact search finds a dissection");
+    let count = dissect_core::verify::verify_pieces(lattice, mirror, &figs, &found)
+        .expect("the SAT dissection is valid");
+    assert_eq!(count, brute, "SAT minimum vs brute force for {texts:?}");
+    assert!(exact.optimal(), "a minimum found by SAT is proved optimal");
+    assert_eq!(exact.lower_bound.value, brute);
+
+    if brute > 1 {
+        let bound = run(&figs, mirror, Mode::LowerBound, Some(brute - 1));
+        assert_eq!(
+            bound.lower_bound.value, brute,
+            "the bound proved below the minimum is the minimum for {texts:?}"
+        );
+        assert!(bound.found.is_none());
+    }
+    brute
+}
+
+#[test]
+fn square_figures_match_brute_force() {
+    let s = LatticeKind::Square;
+    assert_eq!(check(s, true, &["###\n#..", "##\n##"]), 2);
+    assert_eq!(check(s, true, &["####", "##\n##"]), 2);
+    assert_eq!(check(s, true, &["#.#\n###", "#####"]), 3);
+    assert_eq!(check(s, true, &["###\n###", "######"]), 2);
+    assert_eq!(check(s, true, &["##..\n.##.\n..##", "###\n###"]), 2);
+    assert_eq!(check(s, true, &["###\n#.#\n###", "####\n####"]), 2);
+    assert_eq!(check(s, true, &["####\n####", "##\n##\n##\n##"]), 1);
+}
+
+#[test]
+fn components_force_pieces() {
+    let s = LatticeKind::Square;
+    assert_eq!(check(s, true, &["#.#.#", "###"]), 3);
+    let figs = figures(s, &["#.#.#", "###"]);
+    let b = cheap_bound(&figs, true).unwrap();
+    assert_eq!(b.value, 3);
+    assert!(matches!(
+        b.reason,
+        Reason::Components { .. } | Reason::Incompatible { .. }
+    ));
+}
+
+#[test]
+fn mirror_matters() {
+    let s = LatticeKind::Square;
+    // S and Z tetrominoes: one piece when it may be turned over.
+    assert_eq!(check(s, true, &["##.\n.##", ".##\n##."]), 1);
+    assert_eq!(check(s, false, &["##.\n.##", ".##\n##."]), 2);
+}
+
+#[test]
+fn tri4_figures_match_brute_force() {
+    let t = LatticeKind::Tri4;
+    // A 2x1 rectangle and a diamond of 8 triangles.
+    check(t, true, &["FF", "6C\n39"]);
+    // A unit square and a parallelogram of two half squares.
+    check(t, true, &["F", "3C"]);
+    check(t, false, &["F", "3C"]);
+}
+
+#[test]
+fn cubic_figures_match_brute_force() {
+    let c = LatticeKind::Cubic;
+    assert_eq!(check(c, false, &["##\n##\n\n##\n##", "####\n####"]), 2);
+    check(c, false, &["##\n#.\n\n#.\n..", "####"]);
+    check(c, false, &["###\n#..\n\n##.\n...", "###\n###"]);
+}
+
+#[test]
+fn three_figures_match_brute_force() {
+    let s = LatticeKind::Square;
+    check(s, true, &["####", "##\n##", "#..\n###"]);
+    check(s, true, &["###\n#..", "##\n##", ".#.\n###"]);
+}
+
+#[test]
+fn corners_of_a_square_force_four_pieces() {
+    // 3² + 4² = 5²: the corners of the 5x5 square fit in neither small one,
+    // so they need 4 pieces, and SAT finds 4.
+    let figs = figures(
+        LatticeKind::Square,
+        &[
+            "####..###\n####..###\n####..###\n####.....",
+            "#####\n#####\n#####\n#####\n#####",
+        ],
+    );
+    let b = cheap_bound(&figs, true).unwrap();
+    assert_eq!(b.value, 4);
+    let Reason::Incompatible { figure, cells } = &b.reason else {
+        panic!("expected the corner argument, got {b}");
+    };
+    assert_eq!(*figure, 1);
+    let mut corners = cells.clone();
+    corners.sort();
+    assert_eq!(corners, vec![[0, 0, 0], [0, 4, 0], [4, 0, 0], [4, 4, 0]]);
+    let exact = run(&figs, true, Mode::Minimum, None);
+    let found = exact.found.clone().expect("4 pieces exist");
+    assert_eq!(
+        dissect_core::verify::verify_pieces(LatticeKind::Square, true, &figs, &found),
+        Ok(4)
+    );
+    assert!(exact.optimal());
+}
+
+#[test]
+fn sat_refutes_two_pieces_for_a_rectangle_with_a_hole() {
+    let figs = figures(
+        LatticeKind::Square,
+        &[
+            "###############\n###############\n###############\n####...########\n####...########\n\
+             ###############\n###############\n###############\n###############\n###############",
+            &"############\n".repeat(12),
+        ],
+    );
+    let out = run(&figs, true, Mode::LowerBound, Some(2));
+    assert_eq!(out.lower_bound.value, 3);
+    assert!(matches!(
+        out.lower_bound.reason,
+        Reason::Sat { refuted: 2, .. }
+    ));
+}
+
+#[test]
+fn unequal_areas_are_an_error() {
+    let figs = figures(LatticeKind::Square, &["###", "##"]);
+    let options = ExactOptions::default();
+    let r = search(
+        &figs,
+        &options,
+        &AtomicBool::new(false),
+        &AtomicUsize::new(usize::MAX),
+        &(),
+    );
+    assert!(r.unwrap_err().to_string().contains("different areas"));
+}
+
+#[test]
+fn a_raised_stop_flag_ends_the_search_with_what_is_proved() {
+    let figs = figures(LatticeKind::Square, &["###\n#..", "##\n##"]);
+    let r = search(
+        &figs,
+        &ExactOptions::default(),
+        &AtomicBool::new(true),
+        &AtomicUsize::new(usize::MAX),
+        &(),
+    )
+    .unwrap();
+    assert!(r.stopped);
+    assert!(r.found.is_none());
+    assert_eq!(r.lower_bound.value, 2);
+}
+
+#[test]
+fn python_verifier_accepts_a_sat_dissection() {
+    let texts = ["###\n#.#\n###", "####\n####"];
+    let figs = figures(LatticeKind::Square, &texts);
+    let exact = run(&figs, true, Mode::Minimum, None);
+    let pieces = exact.found.expect("found");
+    let dir = tempfile::tempdir().unwrap();
+    let mut paths = Vec::new();
+    for (i, t) in texts.iter().enumerate() {
+        let p = dir.path().join(format!("f{i}.txt"));
+        std::fs::write(&p, t).unwrap();
+        paths.push(p);
+    }
+    let d = Dissection {
+        lattice: LatticeKind::Square,
+        mirror: true,
+        names: vec!["f0.txt".into(), "f1.txt".into()],
+        pieces,
+    };
+    let sol = dir.path().join("s.json");
+    std::fs::write(&sol, d.to_file(Default::default()).to_json()).unwrap();
+    let verifier =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/tools/verify.py");
+    let out = std::process::Command::new("python3")
+        .arg(&verifier)
+        .args(["--lattice", "square", "--solution"])
+        .arg(&sol)
+        .args(&paths)
+        .output()
+        .expect("python3 runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "verify.py: {text} {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains("valid: 2 pieces"), "verify.py said {text}");
+}
