@@ -98,6 +98,76 @@ fn copy_paste_takes_the_pivots_pieces() {
     check_paste(Cubic, "AAA|ABB", "BBB/BAA", "AAA/ABB");
 }
 
+/// With three figures, `pivot_step` with pivot `pivot` gives every figure
+/// the labels `after` (the pivot's own included): the pivot's pieces are
+/// pasted into every other figure and carry their labels there.
+fn check_paste_all(lattice: LatticeKind, figures: &[&str], pivot: usize, after: &[&str]) {
+    let (figs, problem, cand) = candidate(lattice, false, figures);
+    for seed in 0..8 {
+        let mut c = cand.clone();
+        let conflicts = pivot_step(&problem, &mut c, pivot, &mut rng(seed));
+        assert_eq!(conflicts, 0, "{figures:?} with pivot {pivot}");
+        for (f, want) in after.iter().enumerate() {
+            let (_, want) = labelled(lattice, want);
+            assert_eq!(
+                c.labels[f], want,
+                "figure {f} of {figures:?}, pivot {pivot}"
+            );
+        }
+        assert!(verified(lattice, false, &figs, &c));
+    }
+}
+
+#[test]
+fn copy_paste_from_any_pivot() {
+    // L4 + domino: as given, turned by 90 degrees, turned by 180 degrees;
+    // labels renamed in the other figures.
+    let figures = ["BB|AB|AB", "AAB|BBB", "AAA|ABB"];
+    check_paste_all(Square, &figures, 2, &["AA|BA|BA", "BBA|AAA", "AAA|ABB"]);
+    check_paste_all(Square, &figures, 0, &["BB|AB|AB", "AAB|BBB", "BBB|BAA"]);
+    check_paste_all(
+        Cubic,
+        &["AAA|ABB", "BBB/BAA", "A|A|A/A|B|B"],
+        0,
+        &["AAA|ABB", "AAA/ABB", "A|A|A/A|B|B"],
+    );
+}
+
+/// Aligning to a pivot renames the other figures' labels to the pivot's
+/// (matched pieces share a label) and leaves the pivot alone.
+fn check_align(lattice: LatticeKind, figures: &[&str], pivot: usize, after: &[&str], cost: &[u64]) {
+    let (_, problem, cand) = candidate(lattice, true, figures);
+    let mut c = cand.clone();
+    let aligned = c.align(&problem, pivot);
+    for (f, want) in after.iter().enumerate() {
+        let (_, want) = labelled(lattice, want);
+        assert_eq!(
+            c.labels[f], want,
+            "figure {f} of {figures:?}, pivot {pivot}"
+        );
+        match &aligned.matchings[f] {
+            None => assert_eq!(f, pivot),
+            Some(m) => assert_eq!(m.cost, cost[f], "cost to figure {f}"),
+        }
+    }
+}
+
+#[test]
+fn alignment_to_a_pivot() {
+    let figures = ["AAB", "ABB", "B|A|A"];
+    check_align(Square, &figures, 0, &["AAB", "BAA", "B|A|A"], &[0, 0, 0]);
+    check_align(Square, &figures, 1, &["BBA", "ABB", "A|B|B"], &[0, 0, 0]);
+    check_align(Square, &figures, 2, &["AAB", "BAA", "B|A|A"], &[0, 0, 0]);
+    // Costs are the matched distances: I3 + single against L3 + single.
+    check_align(
+        Square,
+        &["AAAB", "BB|BA", "BAAA"],
+        0,
+        &["AAAB", "AA|AB", "BAAA"],
+        &[0, 2, 0],
+    );
+}
+
 /// `pivot_step` on imperfect candidates: the pivot keeps its labels (with
 /// two figures), every cell keeps a valid label, and a step that reports no
 /// conflict leaves matching pieces.
