@@ -28,6 +28,12 @@ pub enum Command {
     Bound(crate::prove::BoundArgs),
     /// Serve the browser studio (figure editor, solver, downloads) on 127.0.0.1.
     Serve(crate::serve::ServeArgs),
+    /// Draw a solution (svg, png), or make it (stl meshes, ldraw LEGO models, --cut-sheet).
+    Render(crate::render::RenderArgs),
+    /// Turn a picture (PNG, JPEG, SVG; slices for cubic) into a figure with an exact cell count.
+    Rasterize(crate::render::RasterizeArgs),
+    /// Turn a closed STL mesh into a cubic figure with an exact cube count.
+    Voxelize(crate::render::VoxelizeArgs),
 }
 
 fn lattice(s: &str) -> Result<LatticeKind, String> {
@@ -88,6 +94,9 @@ pub struct SolveArgs {
     /// Write the solution JSON here.
     #[arg(short = 'o', long = "output", value_name = "OUT.json")]
     pub output: Option<PathBuf>,
+    /// Also write SVG views (dissection.svg, cut-sheet.svg) into this directory.
+    #[arg(long, value_name = "DIR")]
+    pub render: Option<PathBuf>,
     /// Print nothing but errors.
     #[arg(long, short)]
     pub quiet: bool,

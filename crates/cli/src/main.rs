@@ -4,6 +4,7 @@ mod args;
 mod info;
 mod input;
 mod progress;
+mod render;
 mod serve;
 mod solve;
 mod verify;
@@ -37,6 +38,9 @@ fn main() -> ExitCode {
         args::Command::Verify(a) => verify::run(a),
         args::Command::Info(a) => info::run(a),
         args::Command::Serve(a) => serve::run(a),
+        args::Command::Render(a) => render::run(a),
+        args::Command::Rasterize(a) => render::rasterize(a),
+        args::Command::Voxelize(a) => render::voxelize(a),
     };
     match result {
         Ok(Status::Ok) => ExitCode::SUCCESS,

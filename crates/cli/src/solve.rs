@@ -177,6 +177,9 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         );
     }
 
+    if let Some(dir) = &args.render {
+        crate::render::write_views(dir, &dissection)?;
+    }
     if let Some(out) = &args.output {
         let mut extra = Map::new();
         extra.insert("pieces".into(), json!(found.piece_count()));

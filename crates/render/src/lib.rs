@@ -15,18 +15,22 @@
 #![forbid(unsafe_code)]
 
 pub mod colour;
+pub mod cut_sheet;
 
 pub mod drawing;
 mod ear_clipping;
 mod error;
 mod font;
+pub mod ldraw;
 pub mod mesh;
 pub mod outline;
 pub mod png;
+pub mod rasterize;
 pub mod scene;
 pub mod stl;
 pub mod svg;
 mod view;
+pub mod voxelize;
 
 pub use error::RenderError;
 pub use scene::Scene;

@@ -81,6 +81,22 @@ impl Mesh {
         bad
     }
 
+    /// The number of edges not shared by exactly two triangles, whatever
+    /// their direction (0 for a closed mesh).
+    pub fn open_edges(&self) -> usize {
+        let key = |p: [f64; 3]| p.map(|v| (v as f32).to_bits());
+        let mut count: HashMap<([u32; 3], [u32; 3]), i32> = HashMap::new();
+        for t in &self.triangles {
+            for i in 0..3 {
+                let (a, b) = (key(t[i]), key(t[(i + 1) % 3]));
+                *count
+                    .entry(if a < b { (a, b) } else { (b, a) })
+                    .or_insert(0) += 1;
+            }
+        }
+        count.values().filter(|n| **n != 2).count()
+    }
+
     /// Binary STL.
     pub fn to_binary_stl(&self, name: &str) -> Vec<u8> {
         let mut out = Vec::with_capacity(84 + 50 * self.triangles.len());
