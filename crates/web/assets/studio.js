@@ -860,12 +860,25 @@ async function init() {
     }
   };
   $('#dl-svg').onclick = () => exportFile('svg');
+  $('#dl-png').onclick = () => exportFile('png');
   $('#dl-cut').onclick = () => exportFile('cut-sheet');
   $('#dl-stl').onclick = () => exportFile('stl');
   $('#dl-ldraw').onclick = () => exportFile('ldraw');
   setLattice('square');
   renderFigures();
   updateUndo();
+  try {
+    const info = await api('GET', '/api/info');
+    const buttons = { svg: '#dl-svg', png: '#dl-png', 'cut-sheet': '#dl-cut', stl: '#dl-stl', ldraw: '#dl-ldraw' };
+    for (const [format, sel] of Object.entries(buttons)) {
+      if (!info.exports.includes(format)) {
+        $(sel).disabled = true;
+        $(sel).title = 'this server cannot make this format yet';
+      }
+    }
+  } catch (e) {
+    showMessage(`cannot read the server's info: ${e.message}`);
+  }
   try {
     state.examples = await api('GET', '/api/examples');
     for (const ex of state.examples) {

@@ -31,6 +31,9 @@ pub enum ApiError {
     /// the message names the figure (and line/column for texts).
     #[error("{0}")]
     BadFigure(String),
+    /// Occurs when a solution (for a download) cannot be read or drawn.
+    #[error("{0}")]
+    BadSolution(String),
     /// Occurs when the figures do not have equal areas.
     #[error("figures have different areas: {}", list(.0))]
     UnequalAreas(Vec<(String, usize)>),
@@ -66,7 +69,9 @@ impl ApiError {
             ApiError::BadJson { .. } | ApiError::UnknownLattice(_) | ApiError::BadValue(_) => {
                 StatusCode::BAD_REQUEST
             }
-            ApiError::BadFigure(_) | ApiError::UnequalAreas(_) => StatusCode::UNPROCESSABLE_ENTITY,
+            ApiError::BadFigure(_) | ApiError::BadSolution(_) | ApiError::UnequalAreas(_) => {
+                StatusCode::UNPROCESSABLE_ENTITY
+            }
             ApiError::TooLarge(_) => StatusCode::PAYLOAD_TOO_LARGE,
             ApiError::Busy(_) => StatusCode::TOO_MANY_REQUESTS,
             ApiError::NotFound(_) => StatusCode::NOT_FOUND,
@@ -82,6 +87,7 @@ impl ApiError {
             ApiError::UnknownLattice(_) => "unknown_lattice",
             ApiError::BadValue(_) => "bad_value",
             ApiError::BadFigure(_) => "bad_figure",
+            ApiError::BadSolution(_) => "bad_solution",
             ApiError::UnequalAreas(_) => "unequal_areas",
             ApiError::TooLarge(_) => "too_large",
             ApiError::Busy(_) => "busy",

@@ -9,6 +9,7 @@
 //! [`error::ApiError`]); nothing a client sends makes the server panic.
 
 pub mod error;
+pub mod export;
 pub mod figures;
 pub mod jobs;
 pub mod limits;

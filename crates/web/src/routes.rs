@@ -10,6 +10,7 @@
 //! | `GET /api/solve/{id}` | its progress and, once done, its result |
 //! | `GET /api/solve/{id}/events` | the same as server-sent events |
 //! | `POST /api/solve/{id}/stop` | stop it; the best dissection so far is kept |
+//! | `POST /api/export/{format}` | a download made from a solution (svg, png, stl) |
 //!
 //! See `crates/web/openapi.yaml` for the request and response shapes.
 
@@ -35,7 +36,7 @@ use crate::error::ApiError;
 use crate::figures::{self, FigureInput};
 use crate::jobs::{Job, Jobs, Request, State as JobState};
 use crate::limits::Limits;
-use crate::{assets, examples};
+use crate::{assets, examples, export};
 
 /// The largest request body, in bytes.
 pub const MAX_BODY: usize = 8 * 1024 * 1024;
@@ -71,6 +72,7 @@ pub(crate) fn router_with_state(state: AppState) -> Router {
         .route("/api/solve/{id}", get(solve_status))
         .route("/api/solve/{id}/events", get(solve_events))
         .route("/api/solve/{id}/stop", post(stop_solve))
+        .route("/api/export/{format}", post(export_file))
         .fallback(static_or_404)
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
         .layer(DefaultBodyLimit::max(MAX_BODY))
@@ -115,6 +117,7 @@ async fn info(State(s): State<AppState>) -> Json<Value> {
             "max_time_limit": l.max_time_limit(),
             "max_body_bytes": MAX_BODY,
         },
+        "exports": export::FORMATS,
     }))
 }
 
@@ -322,4 +325,28 @@ async fn static_or_404(uri: Uri) -> Response {
         }
     }
     ApiError::NotFound(format!("nothing at {path}")).into_response()
+}
+
+async fn export_file(
+    State(s): State<AppState>,
+    Path(format): Path<String>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Response, ApiError> {
+    let req: export::ExportRequest = parse(body)?;
+    let limits = Arc::clone(&s.limits);
+    // Drawing and meshing take CPU time: off the async workers.
+    let file = tokio::task::spawn_blocking(move || export::export(&format, &req, &limits))
+        .await
+        .map_err(|e| ApiError::Internal(format!("the exporter failed: {e}")))??;
+    Ok((
+        [
+            (header::CONTENT_TYPE, file.content_type.to_string()),
+            (
+                header::CONTENT_DISPOSITION,
+                format!("attachment; filename=\"{}\"", file.name),
+            ),
+        ],
+        file.bytes,
+    )
+        .into_response())
 }

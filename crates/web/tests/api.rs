@@ -341,3 +341,97 @@ async fn events_stream_progress_then_done_over_a_real_socket() {
     let _ = tx.send(());
     handle.await.unwrap().unwrap();
 }
+
+/// A 2-piece dissection of a 2x2 square into a 4x1 bar.
+const SOLUTION_2X2_TO_4X1: &str = r#"{"format": "dissection-solution/1", "lattice": "square", "mirror": true,
+  "figures": [
+    {"name": "a.txt", "pieces": [[[0,0],[1,0]], [[0,1],[1,1]]]},
+    {"name": "b.txt", "pieces": [[[0,0],[1,0]], [[2,0],[3,0]]]}
+  ]}"#;
+
+async fn export(app: &Router, format: &str, body: &Value) -> (StatusCode, String, Vec<u8>) {
+    let req = Request::post(format!("/api/export/{format}"))
+        .header("content-type", "application/json")
+        .body(Body::from(body.to_string()))
+        .unwrap();
+    let res = app.clone().oneshot(req).await.unwrap();
+    let status = res.status();
+    let disposition = res
+        .headers()
+        .get("content-disposition")
+        .map(|v| v.to_str().unwrap().to_string())
+        .unwrap_or_default();
+    let bytes = res.into_body().collect().await.unwrap().to_bytes().to_vec();
+    (status, disposition, bytes)
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn exports_are_made_by_the_renderer() {
+    let app = app();
+    let solution: Value = serde_json::from_str(SOLUTION_2X2_TO_4X1).unwrap();
+    let (s, name, svg) = export(&app, "svg", &json!({"solution": solution})).await;
+    assert_eq!(s, StatusCode::OK);
+    assert!(name.contains("dissection.svg"), "{name}");
+    let svg = String::from_utf8(svg).unwrap();
+    assert!(svg.contains("<svg") && svg.contains("</svg>"), "{svg}");
+    // The solution may also come as its text.
+    let (s, _, png) = export(&app, "png", &json!({"solution": SOLUTION_2X2_TO_4X1})).await;
+    assert_eq!(s, StatusCode::OK);
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let (s, name, zip) = export(
+        &app,
+        "stl",
+        &json!({"solution": solution, "thickness_mm": 3}),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK);
+    assert!(name.contains(".zip"), "{name}");
+    assert_eq!(&zip[..2], b"PK");
+    // One STL per piece: piece-A.stl and piece-B.stl are named in the archive.
+    let text = String::from_utf8_lossy(&zip);
+    assert!(text.contains("piece-A.stl") && text.contains("piece-B.stl"));
+}
+
+#[tokio::test]
+async fn bad_export_requests_get_json_errors() {
+    let app = app();
+    let solution: Value = serde_json::from_str(SOLUTION_2X2_TO_4X1).unwrap();
+    let cases = [
+        (
+            "svg",
+            json!({"solution": 5}),
+            StatusCode::BAD_REQUEST,
+            "solution",
+        ),
+        (
+            "svg",
+            json!({"solution": "{nope"}),
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "line 1",
+        ),
+        (
+            "gif",
+            json!({"solution": solution}),
+            StatusCode::NOT_FOUND,
+            "unknown export format",
+        ),
+        (
+            "stl",
+            json!({"solution": solution, "cell_mm": -1}),
+            StatusCode::BAD_REQUEST,
+            "",
+        ),
+        (
+            "svg",
+            json!({"solution": {"lattice": "square", "figures": [{"pieces": [[[0, 0], [99999, 0]]]}]}}),
+            StatusCode::PAYLOAD_TOO_LARGE,
+            "beyond",
+        ),
+    ];
+    for (format, body, status, want) in cases {
+        let (s, _, bytes) = export(&app, format, &body).await;
+        let v: Value = serde_json::from_slice(&bytes).unwrap();
+        assert_eq!(s, status, "{format} {body}: {v}");
+        assert!(message(&v).contains(want), "{format} {body}: {v}");
+    }
+}
