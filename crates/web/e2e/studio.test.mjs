@@ -209,6 +209,33 @@ test('a shipped example solves with live progress; hovering a piece highlights i
   for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
   const out = execFileSync('python3', [VERIFY, '--lattice', 'square', '--solution', json, ...figs], { encoding: 'utf8' });
   assert.match(out, new RegExp(`valid: ${pieces} pieces`));
+
+  // Pictures and meshes made by the server's renderer.
+  const svg = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-svg]')), 'utf8');
+  assert.match(svg, /<svg[\s\S]*<\/svg>/);
+  const png = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-png]')));
+  assert.equal(png.subarray(1, 4).toString(), 'PNG');
+  const zip = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-stl]')));
+  assert.equal(zip.subarray(0, 2).toString(), 'PK');
+  assert.match(zip.toString('latin1'), /piece-A\.stl/);
+});
+
+test('an uploaded picture is rasterized to the asked number of cells', async () => {
+  await open();
+  // A black disc on white, drawn by the browser itself.
+  const b64 = await page.evaluate(() => {
+    const c = document.createElement('canvas');
+    c.width = 120; c.height = 90;
+    const g = c.getContext('2d');
+    g.fillStyle = '#fff'; g.fillRect(0, 0, 120, 90);
+    g.fillStyle = '#000'; g.beginPath(); g.arc(60, 45, 40, 0, 2 * Math.PI); g.fill();
+    return c.toDataURL('image/png').split(',')[1];
+  });
+  await card(0).locator('input.cells').fill('50');
+  await card(0).locator('input.picture').setInputFiles({ name: 'disc.png', mimeType: 'image/png', buffer: Buffer.from(b64, 'base64') });
+  await page.waitForFunction(() => window.studio.figures[0].cells.size > 0);
+  assert.equal(await count(0).textContent(), '50 cells');
+  assert.match(await page.textContent('[data-testid=areas]'), /Areas differ by 50 cells/);
 });
 
 test('tri4: a click fills the triangle under the mouse', async () => {
