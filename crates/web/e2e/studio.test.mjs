@@ -252,7 +252,7 @@ test('tri4: a click fills the triangle under the mouse', async () => {
   assert.equal(await count(1).textContent(), '8 cells');
 });
 
-test('cubic: layers are edited apart; Stop ends a solve and keeps what was found', async () => {
+test('cubic: layers are edited apart; the solution turns in 3D', async () => {
   await open();
   await page.selectOption('[data-testid=lattice]', 'cubic');
   await setSize(0, 2, 2);
@@ -266,14 +266,43 @@ test('cubic: layers are edited apart; Stop ends a solve and keeps what was found
   const zs = await page.evaluate(() => [...new Set([...window.studio.figures[0].cells].map((k) => k.split(',')[2]))].sort());
   assert.deepEqual(zs, ['0', '1']);
 
-  // Stop: the cubic example (a search of many seconds), stopped at the first progress.
+  // The cubic example solves and shows a 3D view that can be turned.
   await page.selectOption('[data-testid=example]', 'cube4-cavity-to-7x4x2');
   await page.waitForFunction(() => window.studio.figures.length === 2 && window.studio.figures[1].cells.size === 56);
   assert.match(await page.textContent('[data-testid=areas]'), /every figure has 56 cells/);
+  await solveAndWait(90);
+  await page.waitForSelector('#view3d canvas');
+  const v3 = await page.locator('#view3d canvas').boundingBox();
+  await page.mouse.move(v3.x + v3.width / 2, v3.y + v3.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(v3.x + v3.width / 2 + 80, v3.y + v3.height / 2 + 20, { steps: 5 });
+  await page.mouse.up();
+  await page.locator('#result').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(DOCS, 'studio-cubic.png'), fullPage: true });
+});
+
+test('figure files load from disk; Stop ends a long solve and keeps what was found', async () => {
+  await open();
+  // A 12x12 square and a 2x72 bar: a search of several seconds.
+  const square = `${'#'.repeat(12)}\n`.repeat(12);
+  const bar = `${'#'.repeat(72)}\n`.repeat(2);
+  await card(0).locator('input.load').setInputFiles({ name: 'square12.txt', mimeType: 'text/plain', buffer: Buffer.from(square) });
+  await page.waitForFunction(() => window.studio.figures[0].cells.size === 144);
+  await card(1).locator('input.load').setInputFiles({ name: 'bar2x72.txt', mimeType: 'text/plain', buffer: Buffer.from(bar) });
+  await page.waitForFunction(() => window.studio.figures[1].cells.size === 144);
+  assert.match(await page.textContent('[data-testid=areas]'), /every figure has 144 cells/);
+  assert.equal(await card(0).locator('input.name').inputValue(), 'square12.txt');
+
+  // A bad file gets a message naming the file, line and column.
+  await card(1).locator('input.load').setInputFiles({ name: 'bad.txt', mimeType: 'text/plain', buffer: Buffer.from('##\n#x\n') });
+  await page.waitForSelector('#message:not([hidden])');
+  assert.match(await page.textContent('#message'), /bad\.txt: line 2, column 2/);
+  assert.equal(await count(1).textContent(), '144 cells');
+
   await page.fill('#opt-time', '120');
   const t0 = Date.now();
   await page.click('[data-testid=solve]');
-  await page.waitForSelector('[data-testid=stop]:not([disabled])');
+  await page.waitForFunction(() => document.querySelector('#p-state').textContent === 'running');
   await page.click('[data-testid=stop]');
   await page.waitForSelector('[data-testid=solve]:not([disabled])', { timeout: 60_000 });
   assert.ok(Date.now() - t0 < 60_000, 'stopped well before the time limit');
