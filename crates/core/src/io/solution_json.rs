@@ -4,6 +4,10 @@ use serde::{Deserialize, Serialize};
 
 use crate::lattice::{Cell, LatticeKind};
 
+/// The largest coordinate a solution cell may have (so that lattice points,
+/// up to 6 times larger, stay far from overflow).
+pub const MAX_COORDINATE: i64 = 1 << 24;
+
 /// The value of the `format` key.
 pub const SOLUTION_FORMAT: &str = "dissection-solution/1";
 
@@ -119,7 +123,7 @@ pub fn parse_solution(text: &str) -> Result<(SolutionFile, Dissection), Solution
                     lattice,
                 };
                 let want = if lattice == LatticeKind::Square { 2 } else { 3 };
-                if cell.len() != want || cell.iter().any(|v| i32::try_from(*v).is_err()) {
+                if cell.len() != want || cell.iter().any(|v| v.abs() > MAX_COORDINATE) {
                     return Err(bad());
                 }
                 let c = [

@@ -47,9 +47,9 @@ impl Symmetry {
     /// A symmetry from its matrix, or `None` when it is not a signed
     /// permutation matrix.
     pub fn new(m: [[i32; 3]; 3]) -> Option<Symmetry> {
-        for i in 0..3 {
+        for (i, row) in m.iter().enumerate() {
             let row_ok =
-                m[i].iter().filter(|v| **v != 0).count() == 1 && m[i].iter().all(|v| v.abs() <= 1);
+                row.iter().filter(|v| **v != 0).count() == 1 && row.iter().all(|v| v.abs() <= 1);
             let col_ok = (0..3).filter(|&r| m[r][i] != 0).count() == 1;
             if !row_ok || !col_ok {
                 return None;
@@ -189,6 +189,7 @@ pub trait Lattice: Send + Sync {
     fn to_point(&self, cell: Cell) -> Point;
 
     /// The cell whose point is `p`, if any.
+    #[allow(clippy::wrong_self_convention)] // a lattice method, not a constructor
     fn from_point(&self, p: Point) -> Option<Cell>;
 
     /// The edge- (or face-) neighbours of a cell, whether in a figure or not.

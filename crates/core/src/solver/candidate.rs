@@ -21,7 +21,7 @@ pub(crate) struct Problem {
 impl Problem {
     /// The problem of these shapes under this geometry.
     pub(crate) fn new(shapes: Vec<Shape>, geo: Geometry) -> Problem {
-        let layout = Layout::new(&shapes, geo.modulus);
+        let layout = Layout::new(&shapes, geo.dim, geo.modulus);
         let moved = shapes.iter().map(|s| s.moved(&geo.syms, &layout)).collect();
         Problem {
             shapes,

@@ -209,8 +209,9 @@ impl Drop for LabelGrid<'_> {
 }
 
 impl Layout {
-    /// The layout for these shapes; translations are multiples of `modulus`.
-    pub(crate) fn new(shapes: &[Shape], modulus: i32) -> Layout {
+    /// The layout for these shapes; translations are multiples of `modulus`
+    /// in the first `dim` coordinates.
+    pub(crate) fn new(shapes: &[Shape], dim: usize, modulus: i32) -> Layout {
         let boxes: Vec<(Point, Point)> = shapes.iter().map(|s| s.point_box()).collect();
         let mut ext = [0i64; 3];
         for (lo, hi) in &boxes {
@@ -218,11 +219,11 @@ impl Layout {
                 ext[d] = ext[d].max((hi[d] - lo[d]) as i64);
             }
         }
-        // Room for the largest piece around any centroid, plus rounding.
-        let pad: Vec<i64> = ext
-            .iter()
-            .map(|e| if *e == 0 { 0 } else { e + modulus as i64 + 2 })
-            .collect();
+        // Rotations mix the translated axes, so each of them gets room for
+        // the largest extent of any axis, plus the rounding of the
+        // centroid offset; axes that translations never move need none.
+        let reach = ext[..dim].iter().copied().max().unwrap_or(0) + modulus as i64 + 2;
+        let pad: Vec<i64> = (0..3).map(|d| if d < dim { reach } else { 0 }).collect();
         let mut size = [1i64; 3];
         for (lo, hi) in &boxes {
             for d in 0..3 {

@@ -209,7 +209,6 @@ fn check_definition(lattice: LatticeKind, mirror: bool, a: &[Cell], b: &[Cell]) 
 /// point ±1 in y and counts as a hit. E.g. square `.|.|.|A|A` against
 /// `A|.|.|A` gives D = 2; the definition (and 89ef82a) gives 4.
 #[test]
-#[ignore = "distance counts false hits on one-cell-wide figures (linear grid aliasing since c0834ef)"]
 fn distance_follows_its_definition_on_thin_figures() {
     check_definition(
         Square,
@@ -260,7 +259,6 @@ fn distance_follows_its_definition_on_random_pieces() {
 /// triangle onto the left one, and cubic `AA` -> `A/A` a transform that
 /// misses both cubes. Copy-paste applies these transforms. Passes at 89ef82a.
 #[test]
-#[ignore = "distance returns transforms that miss (linear grid aliasing since c0834ef)"]
 fn transforms_reach_the_distance() {
     let cases: &[(LatticeKind, &str, &str)] = &[
         (Square, "AA", "A|A"),
