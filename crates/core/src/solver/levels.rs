@@ -9,7 +9,7 @@ use std::sync::atomic::AtomicBool;
 use rand::RngExt;
 
 use crate::piece::UNSET;
-use crate::solver::candidate::{Candidate, Problem, Score};
+use crate::solver::candidate::{Aligned, Candidate, Problem, Score};
 use crate::solver::flood_fill::{flood_fill, Fallback};
 use crate::solver::refine::{mismatched_cells, refine_with_patience};
 use crate::solver::Options;
@@ -69,7 +69,10 @@ pub(crate) fn grow<R: rand::Rng>(
     stop: &AtomicBool,
 ) -> (Candidate, Score) {
     let mut cand = parent.clone();
-    let split = rng.random_bool(0.75) && split_worst(problem, &mut cand, options, rng, stop);
+    let split = rng.random_bool(0.75) && {
+        let pivot = rng.random_range(0..problem.shapes.len());
+        split_worst(problem, &mut cand, pivot, options, rng, stop)
+    };
     if !split {
         piece_from_mismatches(problem, &mut cand, rng);
     }
@@ -89,27 +92,16 @@ pub(crate) fn grow<R: rand::Rng>(
 /// a random pivot), with all its matched pieces, into two by running level 1
 /// on those pieces as if they were the input figures. Returns false when no
 /// piece can be split (a piece of one cell somewhere).
-fn split_worst<R: rand::Rng>(
+pub(crate) fn split_worst<R: rand::Rng>(
     problem: &Problem,
     cand: &mut Candidate,
+    pivot: usize,
     options: &Options,
     rng: &mut R,
     stop: &AtomicBool,
 ) -> bool {
-    let nfig = problem.shapes.len();
-    let pivot = rng.random_range(0..nfig);
     let aligned = cand.align(problem, pivot);
-    let worst = (0..cand.k)
-        .filter(|&a| aligned.pieces.iter().all(|p| p.size(a) >= 2))
-        .max_by_key(|&a| {
-            let d: u64 = aligned
-                .matchings
-                .iter()
-                .flatten()
-                .map(|m| m.dists[a] as u64)
-                .sum();
-            (d, std::cmp::Reverse(a))
-        });
+    let worst = worst_piece(&aligned);
     let Some(a) = worst else { return false };
     let members: Vec<Vec<u32>> = aligned
         .pieces
@@ -145,9 +137,31 @@ fn split_worst<R: rand::Rng>(
     true
 }
 
+/// The piece with the largest total distance to its matches in the other
+/// figures (labels aligned to the pivot), among the pieces with at least two
+/// cells in every figure; ties go to the lowest label.
+pub(crate) fn worst_piece(aligned: &Aligned) -> Option<usize> {
+    let k = aligned.pieces.first().map_or(0, |p| p.count());
+    (0..k)
+        .filter(|&a| aligned.pieces.iter().all(|p| p.size(a) >= 2))
+        .max_by_key(|&a| {
+            let d: u64 = aligned
+                .matchings
+                .iter()
+                .flatten()
+                .map(|m| m.dists[a] as u64)
+                .sum();
+            (d, std::cmp::Reverse(a))
+        })
+}
+
 /// A new piece grown, in every figure, from a random mismatched cell by
 /// flood fill through mismatched cells.
-fn piece_from_mismatches<R: rand::Rng>(problem: &Problem, cand: &mut Candidate, rng: &mut R) {
+pub(crate) fn piece_from_mismatches<R: rand::Rng>(
+    problem: &Problem,
+    cand: &mut Candidate,
+    rng: &mut R,
+) {
     let marked = mismatched_cells(problem, cand);
     let new_label = cand.k as u16;
     for (f, cells) in marked.iter().enumerate() {
