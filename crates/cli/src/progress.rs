@@ -55,15 +55,17 @@ impl Observer for Progress {
                     explorations,
                 },
             ) if *level > 0 => {
-                let b = ProgressBar::new(*explorations as u64);
-                b.set_style(
-                    ProgressStyle::with_template(
-                        "{prefix} [{bar:30}] {pos}/{len} explorations {msg} ({elapsed})",
-                    )
-                    .expect("valid template")
-                    .progress_chars("=> "),
-                );
-                b.set_prefix(format!("level {level} ({pieces} pieces)"));
+                // The bar takes the width left, so that the line never wraps
+                // on a narrow terminal.
+                let style = ProgressStyle::with_template(
+                    "{prefix} [{wide_bar}] {pos}/{len} explorations, {msg} ({elapsed})",
+                )
+                .expect("valid template")
+                .progress_chars("=> ");
+                let b = ProgressBar::new(*explorations as u64)
+                    .with_style(style)
+                    .with_prefix(format!("level {level} ({pieces} pieces)"))
+                    .with_message("best score: none yet");
                 if let Some(old) = bar.lock().expect("bar lock").replace(b) {
                     old.finish_and_clear();
                 }
@@ -78,8 +80,11 @@ impl Observer for Progress {
                 },
             ) => {
                 if let Some(b) = bar.lock().expect("bar lock").as_ref() {
-                    b.set_position(*done as u64);
-                    b.set_message(format!("best E_M {best_mismatch}, E {best_score:.2}"));
+                    // Workers report out of order: never step back.
+                    if *done as u64 >= b.position() {
+                        b.set_position(*done as u64);
+                        b.set_message(format!("best E_M {best_mismatch}, E {best_score:.2}"));
+                    }
                 }
             }
             (Progress::Bar { bar, start }, e @ Event::LevelFinished { .. }) => {

@@ -84,6 +84,38 @@ fn without_a_terminal_progress_is_one_plain_line_per_level() {
 }
 
 #[test]
+fn on_a_terminal_progress_is_a_bar() {
+    // `script` (util-linux, part of every Debian) gives the run a terminal.
+    let sb = Sandbox::new();
+    let [a, b] = pair(&sb);
+    let command = format!(
+        "{} solve --color never -o out.json {a} {b}",
+        env!("CARGO_BIN_EXE_dissect")
+    );
+    let out = std::process::Command::new("script")
+        .args(["-qec", &command, "/dev/null"])
+        .current_dir(sb.path("."))
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("`script` (util-linux) runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", clip(&text));
+    assert!(!text.contains("panicked"), "{}", clip(&text));
+    for part in [
+        "level 1 (2 pieces) [",
+        "/400 explorations, ",
+        "level 1 (2 pieces): ",
+    ] {
+        assert!(
+            text.contains(part),
+            "no {part:?} on the terminal:\n{}",
+            clip(&text)
+        );
+    }
+    assert_valid(&sb, "square", "out.json", &[&a, &b]);
+}
+
+#[test]
 fn solve_prints_each_figure_with_its_pieces_and_a_summary() {
     let sb = Sandbox::new();
     let [a, b] = pair(&sb);
