@@ -81,6 +81,7 @@ const state = {
   events: null,
   result: null, // {lattice, solution, summary}
   hot: -1, // highlighted piece
+  exports: [], // the server's download formats
 };
 
 function newFigure(name, w = 8, h = 8, d = 1) {
@@ -483,74 +484,30 @@ async function loadExample(id) {
   }
 }
 
-/**
- * Rasterizes a picture onto the lattice with exactly `want` cells: dark or
- * opaque pixels are inside. The grid scale is chosen so that the inked area
- * is about `want` cells, then the `want` most covered cells are kept.
- */
+/** Rasterizes a picture on the server (dissect-render) to exactly `want` cells. */
 async function loadPicture(i, file, want) {
   try {
     if (!(want >= 1)) throw new Error('give the number of cells the figure should have');
-    const img = await createImageBitmap(file);
-    const S = 256;
-    const scale = Math.min(1, S / Math.max(img.width, img.height));
-    const pw = Math.max(1, Math.round(img.width * scale)), ph = Math.max(1, Math.round(img.height * scale));
-    const cv = new OffscreenCanvas(pw, ph);
-    const g = cv.getContext('2d');
-    g.drawImage(img, 0, 0, pw, ph);
-    const px = g.getImageData(0, 0, pw, ph).data;
-    let anyAlpha = false;
-    for (let p = 3; p < px.length; p += 4) if (px[p] < 250) { anyAlpha = true; break; }
-    const ink = new Float32Array(pw * ph);
-    let total = 0;
-    for (let p = 0; p < pw * ph; p++) {
-      const [r, gg, b, a] = [px[4 * p], px[4 * p + 1], px[4 * p + 2], px[4 * p + 3]];
-      const dark = 1 - (0.299 * r + 0.587 * gg + 0.114 * b) / 255;
-      ink[p] = anyAlpha ? (a / 255) * (dark > 0.05 || a > 0 ? 1 : 0) : (dark > 0.5 ? 1 : 0);
-      total += ink[p];
-    }
-    if (total < 1) throw new Error(`${file.name}: the picture has nothing dark or opaque in it`);
-    const perBlock = state.lattice === 'tri4' ? 4 : 1;
-    // Blocks across the picture's long side so that the ink covers `want` cells.
-    const frac = total / (pw * ph);
-    const blocks = Math.sqrt(want / perBlock / frac);
-    const bw = Math.max(1, Math.min(128, Math.round(blocks * pw / Math.max(pw, ph) * Math.sqrt(Math.max(pw, ph) ** 2 / (pw * ph)))));
-    const bh = Math.max(1, Math.min(128, Math.round(bw * ph / pw)));
-    const cover = [];
-    const layer = state.lattice === 'cubic' ? state.figures[i].layer : 0;
-    for (let by = 0; by < bh; by++) {
-      for (let bx = 0; bx < bw; bx++) {
-        for (const c of blockCells(state.lattice, bx, by, layer)) {
-          let sum = 0, n = 0;
-          const x0 = Math.floor(bx * pw / bw), x1 = Math.max(x0 + 1, Math.floor((bx + 1) * pw / bw));
-          const y0 = Math.floor(by * ph / bh), y1 = Math.max(y0 + 1, Math.floor((by + 1) * ph / bh));
-          for (let y = y0; y < y1; y++) {
-            for (let x = x0; x < x1; x++) {
-              if (state.lattice === 'tri4') {
-                const fx = bx + (x + 0.5 - x0) / (x1 - x0), fy = by + (y + 0.5 - y0) / (y1 - y0);
-                if (cellAt('tri4', fx, fy, 0)[2] !== c[2]) continue;
-              }
-              sum += ink[y * pw + x]; n++;
-            }
-          }
-          cover.push([n ? sum / n : 0, c]);
-        }
-      }
-    }
-    if (cover.length < want) throw new Error(`${want} cells do not fit on a ${bw}×${bh} grid; ask for fewer`);
-    cover.sort((a, b) => b[0] - a[0]);
+    const q = new URLSearchParams({ lattice: state.lattice, cells: String(want), name: file.name.replace(/\.[^.]*$/, '') + '.txt' });
+    const res = await fetch(`/api/rasterize?${q}`, { method: 'POST', body: file });
+    const data = await res.json().catch(() => ({ error: { message: `HTTP ${res.status}` } }));
+    if (!res.ok) throw new Error(data.error?.message || `HTTP ${res.status}`);
     const fig = state.figures[i];
     const before = new Set(fig.cells);
     if (state.lattice === 'cubic') {
-      for (const k of [...fig.cells]) if (unkey(k)[2] === layer) fig.cells.delete(k);
+      // The picture becomes the current layer.
+      for (const k of [...fig.cells]) if (unkey(k)[2] === fig.layer) fig.cells.delete(k);
+      for (const [x, y] of data.cells) fig.cells.add(key(x, y, fig.layer));
     } else {
       fig.cells.clear();
+      for (const [x, y, t = 0] of data.cells) fig.cells.add(key(x, y, t));
     }
-    for (const [, c] of cover.slice(0, want)) fig.cells.add(key(...c));
-    fig.w = Math.max(bw, 1); fig.h = Math.max(bh, 1);
+    fig.w = Math.min(128, Math.max(fig.w, data.max[0] + 1));
+    fig.h = Math.min(128, Math.max(fig.h, data.max[1] + 1));
     record(i, before);
     showMessage('');
     renderFigures();
+    $('#areas').title = `${file.name}: ${data.changed} cells changed to hit ${want}`;
   } catch (e) {
     showMessage(e.message || String(e));
   }
@@ -751,6 +708,8 @@ function showResult() {
   });
   state.hot = -1;
   redrawResult();
+  $('#dl-cut').disabled = !state.exports.includes('cut-sheet') || r.lattice === 'cubic';
+  $('#dl-ldraw').disabled = !state.exports.includes('ldraw') || r.lattice === 'tri4';
   const v3 = $('#view3d');
   v3.hidden = r.lattice !== 'cubic';
   if (r.lattice === 'cubic') {
@@ -869,6 +828,7 @@ async function init() {
   updateUndo();
   try {
     const info = await api('GET', '/api/info');
+    state.exports = info.exports;
     const buttons = { svg: '#dl-svg', png: '#dl-png', 'cut-sheet': '#dl-cut', stl: '#dl-stl', ldraw: '#dl-ldraw' };
     for (const [format, sel] of Object.entries(buttons)) {
       if (!info.exports.includes(format)) {

@@ -218,6 +218,11 @@ test('a shipped example solves with live progress; hovering a piece highlights i
   const zip = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-stl]')));
   assert.equal(zip.subarray(0, 2).toString(), 'PK');
   assert.match(zip.toString('latin1'), /piece-A\.stl/);
+  const sheet = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-cut]')), 'utf8');
+  assert.match(sheet, /<svg[^>]*mm/);
+  const ldraw = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-ldraw]')));
+  assert.equal(ldraw.subarray(0, 2).toString(), 'PK');
+  assert.match(ldraw.toString('latin1'), /\.ldr/);
 });
 
 test('an uploaded picture is rasterized to the asked number of cells', async () => {

@@ -1,12 +1,16 @@
-//! Downloads made by `dissect-render` from a solution: SVG and PNG views,
-//! STL meshes of the pieces (a ZIP with one file per piece).
+//! Downloads made by `dissect-render` from a solution: SVG and PNG views, a
+//! laser cut sheet (SVG, 2D lattices), STL meshes of the pieces (a ZIP with
+//! one file per piece) and LDraw LEGO models (a ZIP with one `.ldr` per
+//! figure; square and cubic lattices).
 //!
 //! `POST /api/export/{format}` with `{"solution": <solution JSON object or
-//! text>, "cell_mm": .., "thickness_mm": .., "clearance_mm": ..}`.
+//! text>, "cell_mm": .., "thickness_mm": .., "clearance_mm": .., "parts":
+//! "plate"|"brick"}`.
 
 use std::io::Write;
 
 use dissect_core::io::{parse_solution, Dissection};
+use dissect_render::ldraw::PartKind;
 use dissect_render::stl::PhysicalOptions;
 use dissect_render::{RenderError, Scene};
 use serde::Deserialize;
@@ -30,6 +34,9 @@ pub struct ExportRequest {
     /// How much every piece shrinks on each side, mm (STL, cut sheet).
     #[serde(default)]
     pub clearance_mm: Option<f64>,
+    /// LDraw parts for 2D figures: `plate` (default) or `brick`.
+    #[serde(default)]
+    pub parts: Option<String>,
 }
 
 /// A file to download.
@@ -43,7 +50,7 @@ pub struct Download {
 }
 
 /// The formats `POST /api/export/{format}` knows.
-pub const FORMATS: &[&str] = &["svg", "png", "stl"];
+pub const FORMATS: &[&str] = &["svg", "png", "cut-sheet", "stl", "ldraw"];
 
 fn render_error(e: RenderError) -> ApiError {
     match e {
@@ -126,11 +133,39 @@ pub fn export(format: &str, req: &ExportRequest, limits: &Limits) -> Result<Down
             content_type: "image/png",
             bytes: dissect_render::png::render(&scene).map_err(render_error)?,
         },
-        _ => {
+        "cut-sheet" => Download {
+            name: "dissection-cut-sheet.svg".into(),
+            content_type: "image/svg+xml",
+            bytes: dissect_render::cut_sheet::render(&scene, &physical(req))
+                .map_err(render_error)?
+                .into_bytes(),
+        },
+        "stl" => {
             let files =
                 dissect_render::stl::render(&scene, &physical(req)).map_err(render_error)?;
             Download {
                 name: "dissection-stl.zip".into(),
+                content_type: "application/zip",
+                bytes: zip(&files)?,
+            }
+        }
+        _ => {
+            let kind = match req.parts.as_deref() {
+                None | Some("plate") => PartKind::Plate,
+                Some("brick") => PartKind::Brick,
+                Some(other) => {
+                    return Err(ApiError::BadValue(format!(
+                        "parts must be \"plate\" or \"brick\", got {other:?}"
+                    )))
+                }
+            };
+            let files: Vec<(String, Vec<u8>)> = dissect_render::ldraw::render(&scene, kind)
+                .map_err(render_error)?
+                .into_iter()
+                .map(|(n, t)| (n, t.into_bytes()))
+                .collect();
+            Download {
+                name: "dissection-ldraw.zip".into(),
                 content_type: "application/zip",
                 bytes: zip(&files)?,
             }

@@ -13,6 +13,7 @@ pub mod export;
 pub mod figures;
 pub mod jobs;
 pub mod limits;
+pub mod picture;
 
 mod assets;
 mod examples;

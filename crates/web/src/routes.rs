@@ -10,7 +10,8 @@
 //! | `GET /api/solve/{id}` | its progress and, once done, its result |
 //! | `GET /api/solve/{id}/events` | the same as server-sent events |
 //! | `POST /api/solve/{id}/stop` | stop it; the best dissection so far is kept |
-//! | `POST /api/export/{format}` | a download made from a solution (svg, png, stl) |
+//! | `POST /api/export/{format}` | a download made from a solution (svg, png, cut-sheet, stl, ldraw) |
+//! | `POST /api/rasterize?lattice=L&cells=N` | a picture (body) made into a figure of N cells |
 //!
 //! See `crates/web/openapi.yaml` for the request and response shapes.
 
@@ -19,8 +20,8 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use axum::body::Bytes;
-use axum::extract::rejection::BytesRejection;
-use axum::extract::{DefaultBodyLimit, Path, State};
+use axum::extract::rejection::{BytesRejection, QueryRejection};
+use axum::extract::{DefaultBodyLimit, Path, Query, State};
 use axum::http::{header, StatusCode, Uri};
 use axum::response::sse::{Event as SseEvent, KeepAlive, Sse};
 use axum::response::{IntoResponse, Response};
@@ -36,7 +37,7 @@ use crate::error::ApiError;
 use crate::figures::{self, FigureInput};
 use crate::jobs::{Job, Jobs, Request, State as JobState};
 use crate::limits::Limits;
-use crate::{assets, examples, export};
+use crate::{assets, examples, export, picture};
 
 /// The largest request body, in bytes.
 pub const MAX_BODY: usize = 8 * 1024 * 1024;
@@ -73,6 +74,7 @@ pub(crate) fn router_with_state(state: AppState) -> Router {
         .route("/api/solve/{id}/events", get(solve_events))
         .route("/api/solve/{id}/stop", post(stop_solve))
         .route("/api/export/{format}", post(export_file))
+        .route("/api/rasterize", post(rasterize_picture))
         .fallback(static_or_404)
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
         .layer(DefaultBodyLimit::max(MAX_BODY))
@@ -349,4 +351,25 @@ async fn export_file(
         file.bytes,
     )
         .into_response())
+}
+
+async fn rasterize_picture(
+    State(s): State<AppState>,
+    query: Result<Query<picture::RasterQuery>, QueryRejection>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<Json<Value>, ApiError> {
+    let Query(q) =
+        query.map_err(|e| ApiError::BadValue(format!("bad query: {}", e.body_text())))?;
+    let bytes = body.map_err(|e| {
+        if e.status() == StatusCode::PAYLOAD_TOO_LARGE {
+            ApiError::TooLarge(format!("request body over {MAX_BODY} bytes"))
+        } else {
+            ApiError::BadValue(format!("cannot read the request body: {e}"))
+        }
+    })?;
+    let limits = Arc::clone(&s.limits);
+    let v = tokio::task::spawn_blocking(move || picture::rasterize_picture(&q, &bytes, &limits))
+        .await
+        .map_err(|e| ApiError::Internal(format!("the rasterizer failed: {e}")))??;
+    Ok(Json(v))
 }

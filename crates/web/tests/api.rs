@@ -435,3 +435,127 @@ async fn bad_export_requests_get_json_errors() {
         assert!(message(&v).contains(want), "{format} {body}: {v}");
     }
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn cut_sheets_and_ldraw_models_follow_the_lattice() {
+    let app = app();
+    let solution: Value = serde_json::from_str(SOLUTION_2X2_TO_4X1).unwrap();
+    let (s, name, sheet) = export(
+        &app,
+        "cut-sheet",
+        &json!({"solution": solution, "cell_mm": 20}),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK);
+    assert!(name.contains("cut-sheet.svg"), "{name}");
+    let sheet = String::from_utf8(sheet).unwrap();
+    assert!(sheet.contains("mm"), "{sheet}");
+    let (s, name, zip) = export(
+        &app,
+        "ldraw",
+        &json!({"solution": solution, "parts": "brick"}),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK);
+    assert!(name.contains("ldraw.zip"), "{name}");
+    assert_eq!(&zip[..2], b"PK");
+    let (s, _, bytes) = export(
+        &app,
+        "ldraw",
+        &json!({"solution": solution, "parts": "duplo"}),
+    )
+    .await;
+    assert_eq!(
+        s,
+        StatusCode::BAD_REQUEST,
+        "{}",
+        String::from_utf8_lossy(&bytes)
+    );
+    // No LEGO triangles, no cut sheet of cubes: clear errors.
+    let tri = json!({"solution": {"lattice": "tri4", "figures": [
+        {"pieces": [[[0, 0, 0]]]}, {"pieces": [[[5, 5, 0]]]}]}});
+    let (s, _, bytes) = export(&app, "ldraw", &tri).await;
+    let v: Value = serde_json::from_slice(&bytes).unwrap();
+    assert_eq!(s, StatusCode::BAD_REQUEST, "{v}");
+    assert!(message(&v).contains("LDraw"), "{v}");
+    let cubes = json!({"solution": {"lattice": "cubic", "figures": [
+        {"pieces": [[[0, 0, 0]]]}, {"pieces": [[[0, 0, 1]]]}]}});
+    let (s, _, bytes) = export(&app, "cut-sheet", &cubes).await;
+    let v: Value = serde_json::from_slice(&bytes).unwrap();
+    assert_eq!(s, StatusCode::BAD_REQUEST, "{v}");
+    assert!(message(&v).contains("2D"), "{v}");
+}
+
+async fn rasterize(app: &Router, query: &str, body: &[u8]) -> (StatusCode, Value) {
+    let req = Request::post(format!("/api/rasterize?{query}"))
+        .body(Body::from(body.to_vec()))
+        .unwrap();
+    let res = app.clone().oneshot(req).await.unwrap();
+    let status = res.status();
+    let bytes = res.into_body().collect().await.unwrap().to_bytes();
+    (status, serde_json::from_slice(&bytes).unwrap())
+}
+
+const DISC_SVG: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="100" height="80"><circle cx="50" cy="40" r="35" fill="black"/></svg>"#;
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn pictures_are_rasterized_to_the_asked_cell_count() {
+    let app = app();
+    for (query, count) in [
+        ("lattice=square&cells=60&name=disc.txt", 60),
+        ("lattice=tri4&cells=90", 90),
+        ("lattice=cubic&cells=30", 30),
+    ] {
+        let (s, v) = rasterize(&app, query, DISC_SVG.as_bytes()).await;
+        assert_eq!(s, StatusCode::OK, "{query}: {v}");
+        assert_eq!(v["count"], count, "{query}: {v}");
+        assert_eq!(v["min"], json!([0, 0, 0]), "{query}: {v}");
+        // The text is a figure of that many cells.
+        let lattice: LatticeKind = v["lattice"].as_str().unwrap().parse().unwrap();
+        let f = parse_figure(v["text"].as_str().unwrap(), lattice).unwrap();
+        assert_eq!(f.len(), count);
+    }
+    let cases = [
+        (
+            "lattice=square&cells=60",
+            b"not a picture".as_slice(),
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "not a picture",
+        ),
+        (
+            "lattice=square&cells=60",
+            b"".as_slice(),
+            StatusCode::BAD_REQUEST,
+            "empty",
+        ),
+        (
+            "lattice=hex&cells=60",
+            DISC_SVG.as_bytes(),
+            StatusCode::BAD_REQUEST,
+            "unknown lattice",
+        ),
+        (
+            "lattice=square",
+            DISC_SVG.as_bytes(),
+            StatusCode::BAD_REQUEST,
+            "cells",
+        ),
+        (
+            "lattice=square&cells=0",
+            DISC_SVG.as_bytes(),
+            StatusCode::BAD_REQUEST,
+            "at least 1",
+        ),
+        (
+            "lattice=square&cells=100000",
+            DISC_SVG.as_bytes(),
+            StatusCode::PAYLOAD_TOO_LARGE,
+            "200",
+        ),
+    ];
+    for (query, body, status, want) in cases {
+        let (s, v) = rasterize(&app, query, body).await;
+        assert_eq!(s, status, "{query}: {v}");
+        assert!(message(&v).contains(want), "{query}: {v}");
+    }
+}
