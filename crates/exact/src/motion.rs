@@ -20,6 +20,16 @@ pub enum MotionSet {
     All,
 }
 
+impl std::fmt::Display for MotionSet {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            MotionSet::Translations => "translations only",
+            MotionSet::Rotations => "rotations without flips",
+            MotionSet::All => "all motions",
+        })
+    }
+}
+
 impl MotionSet {
     /// Whether the symmetry with this determinant (and index, 0 = identity) is in the set.
     pub fn admits(self, index: usize, determinant: i32) -> bool {

@@ -16,11 +16,15 @@
 //!   pieces `0, 1, ...`; the other pieces are ordered by their first cell; the
 //!   first piece's motion into shape `f` is taken up to the symmetries of
 //!   shape `f`;
-//! * incompatible cells (see `incompatible_clique`) never share a piece.
+//! * incompatible cells (see `incompatible_clique`) never share a piece;
+//! * local connectivity: in a piece of two or more cells every cell has a
+//!   neighbour in the piece (a counter over shape 0 tells whether the piece
+//!   has two cells).
 //!
-//! Pieces need not be connected: UNSAT proves that no K-piece dissection
-//! exists; a model is a real dissection once its pieces are connected
-//! (`connectivity_cut` adds clauses until they are).
+//! Pieces may still be split into larger parts, so this is a relaxation:
+//! UNSAT proves that no K-piece dissection exists; a model is a real
+//! dissection once its pieces are connected (`connectivity_cut` adds clauses
+//! until they are).
 
 use crate::incompatible_clique::Incompatibility;
 use crate::instance::Instance;
@@ -106,6 +110,32 @@ pub(crate) fn encode(
             sat.add(&[-cell[0][i + 1][a], u[a - 1]]);
         }
     }
+    // No cell of a piece with two or more cells is cut off from the rest:
+    // `big[i]` holds when piece i has two cells (counted in shape 0), and
+    // then every cell of the piece has a neighbour in it, in every shape.
+    #[allow(clippy::needless_range_loop)] // piece i of every shape
+    for i in 0..k {
+        let big = sat.var();
+        let mut seen_before: Option<i32> = None;
+        for &x in &cell[0][i] {
+            if let Some(s) = seen_before {
+                sat.add(&[-x, -s, big]);
+                let next = sat.var();
+                sat.add(&[-s, next]);
+                sat.add(&[-x, next]);
+                seen_before = Some(next);
+            } else {
+                seen_before = Some(x);
+            }
+        }
+        for (f, shape) in shapes.iter().enumerate() {
+            for (c, adj) in shape.adj.iter().enumerate() {
+                let mut clause = vec![-cell[f][i][c], -big];
+                clause.extend(adj.iter().map(|&d| cell[f][i][d]));
+                sat.add(&clause);
+            }
+        }
+    }
     // Incompatible cells never share a piece.
     for (f, g) in incompat.iter().enumerate() {
         for a in 0..shapes[f].len() {
@@ -134,12 +164,11 @@ pub(crate) fn encode(
             let allowed: Vec<Motion> = all
                 .iter()
                 .filter(|m| i != 0 || reps[m.sym])
-                .filter(|m| {
-                    anchor_cell.map_or(true, |c| {
-                        target
-                            .index
-                            .contains_key(&m.transform.apply(shapes[0].points[c]))
-                    })
+                .filter(|m| match anchor_cell {
+                    Some(c) => target
+                        .index
+                        .contains_key(&m.transform.apply(shapes[0].points[c])),
+                    None => true,
                 })
                 .copied()
                 .collect();
