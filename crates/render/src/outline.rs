@@ -116,9 +116,8 @@ impl Outline {
                 // Back at the start: close unless the curve hugs another
                 // corner of the material here first.
                 if cur == a0
-                    && best.map_or(true, |(_, b)| {
-                        turn(d_in, dir_index(cur, *b)) < turn(d_in, dir_index(cur, b0))
-                    })
+                    && !matches!(best, Some((_, b))
+                        if turn(d_in, dir_index(cur, *b)) >= turn(d_in, dir_index(cur, b0)))
                 {
                     break;
                 }

@@ -381,7 +381,11 @@ fn snap_tri4(
             let mut best: Option<(f64, usize, u8, f64)> = None;
             for (k, qq) in q.iter().enumerate() {
                 let cur = state[k];
-                for &(m, p) in &MASKS {
+                for &(m, p) in &MASKS[..14] {
+                    // Ragged masks only to fix an odd count.
+                    if p > 0.0 && diff % 2 == 0 {
+                        continue;
+                    }
                     let delta = m.count_ones() as i64 - cur.0.count_ones() as i64;
                     if delta == 0
                         || delta.signum() != diff.signum()
@@ -392,7 +396,7 @@ fn snap_tri4(
                     }
                     let e = err(qq, m, p);
                     let cost = (e - cur.1) / delta.abs() as f64;
-                    if best.map_or(true, |b| cost < b.0) {
+                    if !matches!(best, Some(b) if cost >= b.0) {
                         best = Some((cost, k, m, e));
                     }
                 }
@@ -476,6 +480,12 @@ pub(crate) fn sample(
     let total: f64 = vol.ink.iter().map(|v| *v as f64).sum();
     let dims = if vol.z_scaled { 3.0 } else { 2.0 };
     let s0 = (total / (n as f64 / per_cell)).powf(1.0 / dims);
+    // Cells much smaller than a sample carry no information.
+    let finest = if vol.z_scaled { 1.0 } else { 0.5 };
+    if s0 < finest {
+        let nearest = run(finest).map_or_else(|c| c, |(cells, _, _)| cells.len());
+        return Err(RenderError::Unreachable { asked: n, nearest });
+    }
     let mut best: Option<(usize, usize, Vec<Cell>, f64, f64)> = None;
     let mut nearest: Option<usize> = None;
     for k in 0..=120usize {
@@ -487,7 +497,7 @@ pub(crate) fn sample(
         }
         match run(s) {
             Ok((cells, t, changed)) => {
-                if best.as_ref().map_or(true, |b| (changed, k) < (b.0, b.1)) {
+                if !matches!(&best, Some(b) if (changed, k) >= (b.0, b.1)) {
                     best = Some((changed, k, cells, s, t));
                 }
                 if changed == 0 {
@@ -495,7 +505,7 @@ pub(crate) fn sample(
                 }
             }
             Err(reached) => {
-                if nearest.map_or(true, |m| reached.abs_diff(n) < m.abs_diff(n)) {
+                if !matches!(nearest, Some(m) if reached.abs_diff(n) >= m.abs_diff(n)) {
                     nearest = Some(reached);
                 }
             }

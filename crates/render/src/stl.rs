@@ -214,6 +214,9 @@ fn extrude(outline: &Outline, opts: &PhysicalOptions) -> Result<Mesh, RenderErro
     Ok(Mesh::new(out))
 }
 
+/// The corner loops of one flat face: axis, direction, loops of grid points.
+type FaceLoops = (usize, i32, Vec<Vec<[i32; 3]>>);
+
 /// The surface of a set of cubes shrunk by `clearance`, with one polygon per
 /// flat face.
 fn voxel_mesh(cells: &[Cell], opts: &PhysicalOptions) -> Result<Mesh, RenderError> {
@@ -278,7 +281,7 @@ fn voxel_mesh(cells: &[Cell], opts: &PhysicalOptions) -> Result<Mesh, RenderErro
         }
     }
     // Face loops in grid lines (3D integer points).
-    let mut faces: Vec<(usize, i32, Vec<Vec<[i32; 3]>>)> = Vec::new();
+    let mut faces: Vec<FaceLoops> = Vec::new();
     for (&(axis, dir, plane), squares) in &groups {
         let outline = Outline::of_cells(LatticeKind::Square, squares);
         let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);

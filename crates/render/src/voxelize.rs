@@ -40,7 +40,7 @@ pub fn voxelize(stl: &[u8], opts: &VoxelOptions) -> Result<Rasterized, RenderErr
     }
     let size = [hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]];
     let longest = size.iter().copied().fold(0.0, f64::max);
-    if !(longest > 0.0) || size.iter().any(|v| *v <= 0.0) {
+    if longest.is_nan() || longest <= 0.0 || size.iter().any(|v| *v <= 0.0) {
         return Err(RenderError::BadMesh(
             "the mesh is flat (it encloses no volume)".into(),
         ));

@@ -1,0 +1,548 @@
+//! End-to-end tests of dissect-render on small dissections written as ASCII
+//! figures. Every solution is checked by `dissect_core::verify` (through
+//! `Scene::from_solution`). Golden files live in `tests/golden/`; run with
+//! `DISSECT_UPDATE_GOLDEN=1` to write them again after a deliberate change.
+
+use std::collections::{HashMap, HashSet};
+use std::path::PathBuf;
+
+use dissect_core::io::parse_figure;
+use dissect_core::{Cell, LatticeKind};
+use dissect_render::ldraw::{self, PartKind};
+use dissect_render::mesh::Mesh;
+use dissect_render::rasterize::{rasterize, RasterOptions};
+use dissect_render::stl::{self, PhysicalOptions};
+use dissect_render::voxelize::{voxelize, VoxelOptions};
+use dissect_render::{cut_sheet, png, svg, RenderError, Scene};
+
+/// A small dissection: lattice, figure texts and the solution JSON.
+struct Case {
+    name: &'static str,
+    lattice: LatticeKind,
+    figures: [&'static str; 2],
+    solution: &'static str,
+}
+
+const SQUARE: Case = Case {
+    name: "square",
+    lattice: LatticeKind::Square,
+    // A 4x4 square with a hole-free L cut, into a 2x8 bar.
+    figures: ["####\n####\n####\n####\n", "########\n########\n"],
+    solution: r#"{"format":"dissection-solution/1","lattice":"square","mirror":true,"figures":[
+      {"name":"square.txt","pieces":[[[0,0],[1,0],[2,0],[3,0],[0,1],[1,1],[2,1],[3,1]],
+                                     [[0,2],[1,2],[2,2],[3,2],[0,3],[1,3],[2,3],[3,3]]]},
+      {"name":"bar.txt","pieces":[[[0,0],[1,0],[2,0],[3,0],[0,1],[1,1],[2,1],[3,1]],
+                                  [[4,0],[5,0],[6,0],[7,0],[4,1],[5,1],[6,1],[7,1]]]}]}"#,
+};
+
+const RING: Case = Case {
+    name: "ring",
+    lattice: LatticeKind::Square,
+    // A 3x3 ring (a piece with a hole) and an L; into a 2x... staircase.
+    figures: ["####\n#..#\n####\n", "####\n#..#\n####\n"],
+    solution: r#"{"format":"dissection-solution/1","lattice":"square","figures":[
+      {"name":"a.txt","pieces":[[[0,0],[1,0],[2,0],[3,0],[0,1],[0,2],[1,2]],[[3,1],[3,2],[2,2]]]},
+      {"name":"b.txt","pieces":[[[0,0],[1,0],[2,0],[3,0],[0,1],[0,2],[1,2]],[[3,1],[3,2],[2,2]]]}]}"#,
+};
+
+const TRI4: Case = Case {
+    name: "tri4",
+    lattice: LatticeKind::Tri4,
+    // A 2x1 rectangle into a right triangle with legs 2.
+    figures: ["##\n", ".6\n6#\n"],
+    solution: r#"{"format":"dissection-solution/1","lattice":"tri4","figures":[
+      {"name":"rect.txt","pieces":[[[0,0,0],[0,0,1],[0,0,2],[0,0,3]],[[1,0,1],[1,0,2]],[[1,0,3],[1,0,0]]]},
+      {"name":"triangle.txt","pieces":[[[1,1,0],[1,1,1],[1,1,2],[1,1,3]],[[1,0,1],[1,0,2]],[[0,1,1],[0,1,2]]]}]}"#,
+};
+
+const CUBIC: Case = Case {
+    name: "cubic",
+    lattice: LatticeKind::Cubic,
+    // A 2x2x2 cube into a 4x2x1 slab, with an L-shaped piece.
+    figures: ["##\n##\n\n##\n##\n", "####\n####\n"],
+    solution: r#"{"format":"dissection-solution/1","lattice":"cubic","mirror":false,"figures":[
+      {"name":"cube.txt","pieces":[[[0,0,0],[1,0,0],[0,1,0],[1,1,0]],[[0,0,1],[1,0,1],[0,1,1],[1,1,1]]]},
+      {"name":"slab.txt","pieces":[[[0,0,0],[1,0,0],[0,1,0],[1,1,0]],[[2,0,0],[3,0,0],[2,1,0],[3,1,0]]]}]}"#,
+};
+
+const CUBIC_STEP: Case = Case {
+    name: "cubic-step",
+    lattice: LatticeKind::Cubic,
+    // Pieces with steps (faces meeting at T-junctions) and an L.
+    figures: ["###\n#..\n\n#..\n...\n", "##\n.#\n\n##\n..\n"],
+    solution: r#"{"format":"dissection-solution/1","lattice":"cubic","figures":[
+      {"name":"a.txt","pieces":[[[0,0,0],[0,1,0],[0,0,1]],[[1,0,0],[2,0,0]]]},
+      {"name":"b.txt","pieces":[[[0,0,0],[1,0,0],[1,1,0]],[[0,0,1],[1,0,1]]]}]}"#,
+};
+
+fn scene(c: &Case) -> Scene {
+    Scene::from_solution(c.solution, &c.figures).unwrap_or_else(|e| panic!("{}: {e}", c.name))
+}
+
+fn golden_path(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/golden")
+        .join(name)
+}
+
+fn updating() -> bool {
+    std::env::var_os("DISSECT_UPDATE_GOLDEN").is_some()
+}
+
+/// Compares text with its golden file (or writes it when updating).
+fn check_golden_text(name: &str, text: &str) {
+    let path = golden_path(name);
+    if updating() {
+        std::fs::write(&path, text).unwrap();
+        return;
+    }
+    let want = std::fs::read_to_string(&path).unwrap_or_else(|_| {
+        panic!(
+            "missing {} (run with DISSECT_UPDATE_GOLDEN=1)",
+            path.display()
+        )
+    });
+    assert!(
+        want == text,
+        "{name} differs from its golden file; run with DISSECT_UPDATE_GOLDEN=1 if the change is meant"
+    );
+}
+
+#[test]
+fn the_fixtures_are_valid_dissections() {
+    for c in [&SQUARE, &RING, &TRI4, &CUBIC, &CUBIC_STEP] {
+        let s = scene(c);
+        assert_eq!(s.lattice(), c.lattice);
+        assert_eq!(s.figure_count(), 2);
+    }
+}
+
+#[test]
+fn svg_views_match_their_snapshots() {
+    for c in [&SQUARE, &RING, &TRI4, &CUBIC] {
+        let s = scene(c);
+        check_golden_text(&format!("{}.svg", c.name), &svg::render(&s));
+    }
+}
+
+#[test]
+fn cut_sheets_match_their_snapshots() {
+    for c in [&SQUARE, &TRI4] {
+        let s = scene(c);
+        let sheet = cut_sheet::render(&s, &PhysicalOptions::default()).unwrap();
+        assert!(sheet.contains("width=\""), "{sheet}");
+        assert!(sheet.contains("mm\""));
+        check_golden_text(&format!("{}-cut-sheet.svg", c.name), &sheet);
+    }
+    let e = cut_sheet::render(&scene(&CUBIC), &PhysicalOptions::default()).unwrap_err();
+    assert!(e.to_string().contains("2D lattices"), "{e}");
+}
+
+#[test]
+fn piece_outlines_are_merged_polygons() {
+    let svg = svg::render(&scene(&SQUARE));
+    // Each 2x4 piece is one path with one closed curve of 4 corners.
+    let piece_paths: Vec<&str> = svg
+        .lines()
+        .filter(|l| l.starts_with("<path d=\"M") && l.contains("fill=\"#e6615c\""))
+        .collect();
+    assert_eq!(
+        piece_paths.len(),
+        2 + 1,
+        "two figures and the legend swatch"
+    );
+    for p in &piece_paths[..2] {
+        assert_eq!(p.matches('Z').count(), 1, "{p}");
+        assert_eq!(p.matches('L').count(), 3, "{p}");
+    }
+    // The ring piece: one outer curve and one hole.
+    let ring = svg::render(&scene(&RING));
+    let first = ring
+        .lines()
+        .find(|l| l.starts_with("<path d=\"M") && l.contains("fill=\"#e6615c\""))
+        .unwrap();
+    assert_eq!(
+        first.matches('Z').count(),
+        1,
+        "the hole touches the outside: one curve"
+    );
+    // Triangles are drawn as triangles.
+    let tri = svg::render(&scene(&TRI4));
+    let half = tri
+        .lines()
+        .find(|l| l.starts_with("<path d=\"M") && l.contains("fill=\"#5da5da\""))
+        .unwrap();
+    assert_eq!(half.matches('L').count(), 2, "{half}");
+}
+
+/// Counts pixels whose colour differs by more than 8 in any channel.
+fn differing_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
+    if a.dimensions() != b.dimensions() {
+        return usize::MAX;
+    }
+    a.pixels()
+        .zip(b.pixels())
+        .filter(|(p, q)| p.0.iter().zip(q.0.iter()).any(|(x, y)| x.abs_diff(*y) > 8))
+        .count()
+}
+
+#[test]
+fn png_views_match_their_reference_pictures() {
+    for c in [&SQUARE, &TRI4, &CUBIC] {
+        let bytes = png::render(&scene(c)).unwrap();
+        let name = format!("{}.png", c.name);
+        let path = golden_path(&name);
+        if updating() {
+            std::fs::write(&path, &bytes).unwrap();
+            continue;
+        }
+        let got = image::load_from_memory(&bytes).unwrap().to_rgba8();
+        let want = image::open(&path)
+            .unwrap_or_else(|_| {
+                panic!(
+                    "missing {} (run with DISSECT_UPDATE_GOLDEN=1)",
+                    path.display()
+                )
+            })
+            .to_rgba8();
+        let diff = differing_pixels(&got, &want);
+        assert!(
+            diff <= 20,
+            "{name}: {diff} pixels differ from the reference"
+        );
+        // And the picture is not blank: the pieces' colours are there.
+        let red = got.pixels().filter(|p| p.0[..3] == [230, 97, 92]).count();
+        assert!(red > 100, "{name}: piece A is not drawn");
+    }
+}
+
+fn check_meshes(c: &Case, opts: &PhysicalOptions) {
+    let s = scene(c);
+    let files = stl::render(&s, opts).unwrap();
+    assert_eq!(files.len(), s.piece_count());
+    let (area, h) = match c.lattice {
+        LatticeKind::Cubic => (opts.cell_mm.powi(3), 1.0),
+        LatticeKind::Square => (opts.cell_mm.powi(2), opts.thickness_mm),
+        LatticeKind::Tri4 => (opts.cell_mm.powi(2) / 4.0, opts.thickness_mm),
+    };
+    for (i, (name, bytes)) in files.iter().enumerate() {
+        assert_eq!(name, &format!("piece-{}.stl", s.label(i)));
+        let m = Mesh::from_stl(bytes).unwrap();
+        assert_eq!(
+            m.bad_edges(),
+            0,
+            "{} {name}: not closed and manifold",
+            c.name
+        );
+        let full = s.area(i) as f64 * area * h;
+        let v = m.volume();
+        if opts.clearance_mm == 0.0 {
+            assert!(
+                (v - full).abs() < 1e-3 * full,
+                "{} {name}: volume {v}, want {full}",
+                c.name
+            );
+        } else {
+            assert!(
+                v > 0.5 * full && v < full,
+                "{} {name}: volume {v} not below {full}",
+                c.name
+            );
+        }
+        // Coplanar faces are merged: far fewer triangles than cell faces.
+        let cells = s.area(i);
+        let per_cell = if c.lattice == LatticeKind::Cubic {
+            12
+        } else {
+            8
+        };
+        assert!(m.triangles().len() <= per_cell * cells, "{} {name}", c.name);
+    }
+}
+
+#[test]
+fn every_stl_is_closed_and_manifold_with_the_right_volume() {
+    for clearance in [0.0, 0.1, 0.4] {
+        let opts = PhysicalOptions {
+            cell_mm: 10.0,
+            thickness_mm: 3.0,
+            clearance_mm: clearance,
+        };
+        for c in [&SQUARE, &TRI4, &CUBIC, &CUBIC_STEP] {
+            check_meshes(c, &opts);
+        }
+        // The ring's piece touches itself at a corner: only with a clearance
+        // do the walls come apart there.
+        if clearance > 0.0 {
+            check_meshes(&RING, &opts);
+        }
+    }
+}
+
+#[test]
+fn a_rectangle_piece_is_twelve_triangles() {
+    let s = scene(&SQUARE);
+    let m = stl::piece_mesh(&s, 0, &PhysicalOptions::default()).unwrap();
+    assert_eq!(m.triangles().len(), 12);
+}
+
+#[test]
+fn bad_physical_options_are_refused() {
+    let s = scene(&SQUARE);
+    let opts = PhysicalOptions {
+        clearance_mm: 5.0,
+        ..PhysicalOptions::default()
+    };
+    let e = stl::render(&s, &opts).unwrap_err();
+    assert!(e.to_string().contains("--clearance"), "{e}");
+}
+
+/// Part lines of a model: the cells each covers.
+fn parts(text: &str, kind: PartKind) -> Vec<(u32, Vec<Cell>)> {
+    text.lines()
+        .filter(|l| l.starts_with("1 "))
+        .map(|l| ldraw::part_cells(l, kind).unwrap_or_else(|| panic!("unknown part line {l:?}")))
+        .collect()
+}
+
+#[test]
+fn ldraw_models_have_one_part_per_merged_brick_inside_one_piece() {
+    for (c, kind, want_parts) in [
+        (&SQUARE, PartKind::Plate, [2, 2]),
+        (&CUBIC, PartKind::Brick, [2, 2]),
+        (&CUBIC_STEP, PartKind::Brick, [3, 3]),
+    ] {
+        let s = scene(c);
+        let models = ldraw::render(&s, kind).unwrap();
+        assert_eq!(models.len(), 2);
+        for (f, (name, text)) in models.iter().enumerate() {
+            assert!(name.ends_with(".ldr"));
+            assert!(text.starts_with("0 "));
+            for l in text.lines() {
+                let kind_ok = l.starts_with("0 ") || l.starts_with("1 ");
+                assert!(kind_ok, "{l}");
+            }
+            let ps = parts(text, kind);
+            let merged: usize = (0..s.piece_count())
+                .map(|i| ldraw::merge_cells(i, s.cells(f, i), kind).len())
+                .sum();
+            assert_eq!(ps.len(), merged, "{} {name}", c.name);
+            assert_eq!(ps.len(), want_parts[f], "{} {name}", c.name);
+            // Every part lies inside exactly one piece, and parts cover the figure once.
+            let owner: HashMap<Cell, usize> = (0..s.piece_count())
+                .flat_map(|i| s.cells(f, i).iter().map(move |c| (*c, i)))
+                .collect();
+            let mut seen = HashSet::new();
+            for (_, cells) in &ps {
+                let pieces: HashSet<usize> = cells.iter().map(|c| owner[c]).collect();
+                assert_eq!(pieces.len(), 1, "{} {name}: a part spans pieces", c.name);
+                for c in cells {
+                    assert!(seen.insert(*c));
+                }
+            }
+            assert_eq!(seen.len(), owner.len());
+        }
+    }
+    let e = ldraw::render(&scene(&TRI4), PartKind::Plate).unwrap_err();
+    assert!(e.to_string().contains("square and cubic"), "{e}");
+}
+
+#[test]
+fn ldraw_merges_cells_into_big_parts() {
+    let f = parse_figure("####\n####\n###.\n#...\n", LatticeKind::Square).unwrap();
+    let bricks = ldraw::merge_cells(0, f.cells(), PartKind::Plate);
+    let parts: Vec<&str> = bricks.iter().map(|b| b.part).collect();
+    assert_eq!(parts, ["3020", "3623", "3024"]);
+}
+
+/// A PNG of a black disc of radius `r` on white, `size` pixels square.
+fn disc_png(size: u32, r: f64) -> Vec<u8> {
+    let c = size as f64 / 2.0;
+    let img = image::GrayImage::from_fn(size, size, |x, y| {
+        let d = ((x as f64 + 0.5 - c).powi(2) + (y as f64 + 0.5 - c).powi(2)).sqrt();
+        image::Luma([if d <= r { 0 } else { 255 }])
+    });
+    let mut out = Vec::new();
+    img.write_to(&mut std::io::Cursor::new(&mut out), image::ImageFormat::Png)
+        .unwrap();
+    out
+}
+
+#[test]
+fn rasterize_a_disc_hits_the_exact_cell_count() {
+    let pic = disc_png(300, 120.0);
+    for (lattice, n) in [
+        (LatticeKind::Square, 144),
+        (LatticeKind::Square, 145),
+        (LatticeKind::Tri4, 128),
+        (LatticeKind::Tri4, 129),
+    ] {
+        let opts = RasterOptions {
+            lattice,
+            cells: Some(n),
+            ..RasterOptions::default()
+        };
+        let r = rasterize(&[&pic], &opts).unwrap();
+        assert_eq!(r.figure.len(), n, "{lattice} {n}");
+        assert_eq!(parse_figure(&r.text, lattice).unwrap().len(), n);
+        assert_eq!(r.figure.stats().components, 1, "{lattice} {n}\n{}", r.text);
+        assert!(r.changed <= n / 10, "{lattice} {n}: {} changed", r.changed);
+    }
+}
+
+#[test]
+fn tri4_discs_use_half_squares_on_their_diagonals() {
+    let pic = disc_png(300, 120.0);
+    let opts = RasterOptions {
+        lattice: LatticeKind::Tri4,
+        cells: Some(128),
+        ..RasterOptions::default()
+    };
+    let r = rasterize(&[&pic], &opts).unwrap();
+    let halves = r.text.chars().filter(|c| "369C".contains(*c)).count();
+    let ragged = r.text.chars().filter(|c| "1248BDE7".contains(*c)).count();
+    assert!(halves >= 4, "{}", r.text);
+    assert_eq!(ragged, 0, "{}", r.text);
+}
+
+#[test]
+fn rasterize_an_svg_outline_and_a_stack_of_slices() {
+    let svg = br#"<svg xmlns="http://www.w3.org/2000/svg" width="100" height="60">
+      <path d="M10 10 H90 V50 H10 Z" fill="black"/></svg>"#;
+    let opts = RasterOptions {
+        lattice: LatticeKind::Tri4,
+        cells: Some(128),
+        ..RasterOptions::default()
+    };
+    let r = rasterize(&[svg], &opts).unwrap();
+    assert_eq!(r.figure.len(), 128);
+    let slices = [disc_png(80, 30.0), disc_png(80, 30.0), disc_png(80, 20.0)];
+    let refs: Vec<&[u8]> = slices.iter().map(|s| s.as_slice()).collect();
+    let opts = RasterOptions {
+        lattice: LatticeKind::Cubic,
+        cells: Some(56),
+        ..RasterOptions::default()
+    };
+    let r = rasterize(&refs, &opts).unwrap();
+    assert_eq!(r.figure.len(), 56);
+    assert_eq!(r.figure.stats().max[2], 2, "three layers");
+}
+
+#[test]
+fn rasterize_bad_input_gets_clear_errors() {
+    let opts = RasterOptions {
+        cells: Some(10),
+        ..RasterOptions::default()
+    };
+    let e = rasterize(&[b"hello"], &opts).unwrap_err();
+    assert!(matches!(e, RenderError::NotAPicture(_)), "{e}");
+    let blank = disc_png(50, 0.0);
+    let e = rasterize(&[&blank], &opts).unwrap_err();
+    assert_eq!(e, RenderError::EmptyPicture);
+    let dot = disc_png(50, 4.0);
+    let opts = RasterOptions {
+        cells: Some(100_000),
+        ..RasterOptions::default()
+    };
+    let e = rasterize(&[&dot], &opts).unwrap_err();
+    assert!(
+        matches!(e, RenderError::Unreachable { asked: 100_000, .. }),
+        "{e}"
+    );
+    assert!(
+        e.to_string().contains("cannot make exactly 100000 cells"),
+        "{e}"
+    );
+}
+
+/// A closed box mesh from `lo` to `hi`, triangles facing outward.
+fn box_stl(lo: [f64; 3], hi: [f64; 3]) -> Vec<u8> {
+    let p = |x: usize, y: usize, z: usize| {
+        [
+            if x == 0 { lo[0] } else { hi[0] },
+            if y == 0 { lo[1] } else { hi[1] },
+            if z == 0 { lo[2] } else { hi[2] },
+        ]
+    };
+    let quads = [
+        [p(0, 0, 0), p(0, 1, 0), p(1, 1, 0), p(1, 0, 0)],
+        [p(0, 0, 1), p(1, 0, 1), p(1, 1, 1), p(0, 1, 1)],
+        [p(0, 0, 0), p(1, 0, 0), p(1, 0, 1), p(0, 0, 1)],
+        [p(0, 1, 0), p(0, 1, 1), p(1, 1, 1), p(1, 1, 0)],
+        [p(0, 0, 0), p(0, 0, 1), p(0, 1, 1), p(0, 1, 0)],
+        [p(1, 0, 0), p(1, 1, 0), p(1, 1, 1), p(1, 0, 1)],
+    ];
+    let tris = quads
+        .iter()
+        .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
+        .collect();
+    Mesh::new(tris).to_binary_stl("box")
+}
+
+#[test]
+fn voxelize_a_cube_mesh_gives_the_cube() {
+    let stl = box_stl([-1.5, 2.0, 0.0], [1.5, 5.0, 3.0]);
+    let r = voxelize(
+        &stl,
+        &VoxelOptions {
+            cells: Some(27),
+            scale: None,
+        },
+    )
+    .unwrap();
+    assert_eq!(r.text, "###\n###\n###\n\n###\n###\n###\n\n###\n###\n###\n");
+    assert_eq!(r.changed, 0);
+    // A box 4 x 2 x 1 at one unit per cube.
+    let stl = box_stl([0.0, 0.0, 0.0], [4.0, 2.0, 1.0]);
+    let r = voxelize(
+        &stl,
+        &VoxelOptions {
+            cells: None,
+            scale: Some(1.0),
+        },
+    )
+    .unwrap();
+    assert_eq!(r.text, "####\n####\n");
+    // What we write, we read back: the STL of a piece voxelizes to the piece.
+    let s = scene(&CUBIC_STEP);
+    let opts = PhysicalOptions {
+        clearance_mm: 0.0,
+        ..PhysicalOptions::default()
+    };
+    let m = stl::piece_mesh(&s, 0, &opts).unwrap();
+    let r = voxelize(
+        &m.to_binary_stl("a"),
+        &VoxelOptions {
+            cells: Some(3),
+            scale: None,
+        },
+    )
+    .unwrap();
+    assert_eq!(r.text, "#\n#\n\n#\n.\n");
+}
+
+#[test]
+fn voxelize_refuses_open_meshes_and_garbage() {
+    let stl = box_stl([0.0; 3], [1.0; 3]);
+    let mut m = Mesh::from_stl(&stl).unwrap().triangles().to_vec();
+    m.pop();
+    let e = voxelize(
+        &Mesh::new(m).to_binary_stl("open"),
+        &VoxelOptions::default(),
+    )
+    .unwrap_err();
+    assert_eq!(e, RenderError::OpenMesh(3));
+    assert!(e.to_string().contains("not closed"));
+    let e = voxelize(b"not a mesh at all", &VoxelOptions::default()).unwrap_err();
+    assert!(matches!(e, RenderError::BadMesh(_)), "{e}");
+}
+
+#[test]
+fn scenes_refuse_solutions_that_do_not_fit_their_figures() {
+    let e = Scene::from_solution(SQUARE.solution, &["###\n", "###\n"]).unwrap_err();
+    assert!(e.to_string().contains("not a valid dissection"), "{e}");
+    let e = Scene::from_solution(SQUARE.solution, &["#x\n", "##\n"]).unwrap_err();
+    assert!(e.to_string().contains("figure 1: line 1, column 2"), "{e}");
+    let e = Scene::from_solution("{", &[]).unwrap_err();
+    assert!(matches!(e, RenderError::Solution(_)), "{e}");
+}
