@@ -4,6 +4,7 @@ mod args;
 mod info;
 mod input;
 mod progress;
+mod prove;
 mod render;
 mod serve;
 mod solve;
@@ -37,6 +38,7 @@ fn main() -> ExitCode {
         args::Command::Solve(a) => solve::run(a),
         args::Command::Verify(a) => verify::run(a),
         args::Command::Info(a) => info::run(a),
+        args::Command::Bound(a) => prove::bound(a),
         args::Command::Serve(a) => serve::run(a),
         args::Command::Render(a) => render::run(a),
         args::Command::Rasterize(a) => render::rasterize(a),
