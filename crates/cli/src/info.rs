@@ -1,13 +1,16 @@
 //! `dissect info`.
 
+use std::fmt::Write;
+
 use anyhow::Result;
 
 use crate::args::InfoArgs;
-use crate::{input, Status};
+use crate::{input, progress, Status};
 
 pub fn run(args: InfoArgs) -> Result<Status> {
     let figures = input::figures(&args.figures, args.lattice)?;
     let three_d = args.lattice == dissect_core::LatticeKind::Cubic;
+    let mut out = String::new();
     for (path, fig) in args.figures.iter().zip(&figures) {
         let s = fig.stats();
         let size = if three_d {
@@ -21,7 +24,8 @@ pub fn run(args: InfoArgs) -> Result<Status> {
             format!("{}x{}", s.max[0] - s.min[0] + 1, s.max[1] - s.min[1] + 1)
         };
         let plural = |n: usize, w: &str| format!("{n} {w}{}", if n == 1 { "" } else { "s" });
-        println!(
+        _ = writeln!(
+            out,
             "{}: {} ({}), {}, {}, bounding box {size} at ({}, {}{})",
             path.display(),
             plural(s.cells, "cell"),
@@ -40,24 +44,28 @@ pub fn run(args: InfoArgs) -> Result<Status> {
     if figures.len() > 1 {
         let areas: Vec<usize> = figures.iter().map(|f| f.len()).collect();
         if areas.iter().all(|a| *a == areas[0]) {
-            println!("areas are equal: {} cells each", areas[0]);
+            _ = writeln!(out, "areas are equal: {} cells each", areas[0]);
         } else {
             let lo = *areas.iter().min().expect("non-empty");
             let hi = *areas.iter().max().expect("non-empty");
-            println!("AREAS DIFFER: the figures cannot be dissected into each other until they have the same cell count");
+            _ = writeln!(
+ out,"AREAS DIFFER: the figures cannot be dissected into each other until they have the same cell count");
             for (path, a) in args.figures.iter().zip(&areas) {
-                println!(
+                _ = writeln!(
+                    out,
                     "  {}: {a} cells ({:+} against the smallest)",
                     path.display(),
                     *a as i64 - lo as i64
                 );
             }
-            println!(
+            _ = writeln!(
+                out,
                 "  largest difference: {} cell{}",
                 hi - lo,
                 if hi - lo == 1 { "" } else { "s" }
             );
         }
     }
+    progress::stdout(&out);
     Ok(Status::Ok)
 }

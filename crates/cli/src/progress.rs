@@ -1,7 +1,7 @@
 //! Progress on stderr: an indicatif bar on a terminal, one plain line per
 //! level otherwise, nothing with --quiet.
 
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 use std::sync::Mutex;
 use std::time::Instant;
 
@@ -92,10 +92,10 @@ impl Observer for Progress {
                 if let Some(b) = bar.lock().expect("bar lock").take() {
                     b.finish_and_clear();
                 }
-                eprintln!("{line}");
+                stderr_line(&line);
             }
             (Progress::Lines { start }, e @ Event::LevelFinished { .. }) => {
-                eprintln!("{}", level_line(e, start))
+                stderr_line(&level_line(e, start))
             }
             _ => {}
         }
@@ -113,4 +113,16 @@ fn level_line(e: &Event, start: &Instant) -> String {
         ),
         _ => String::new(),
     }
+}
+
+/// Writes `text` to stdout. A reader that went away (`dissect ... | head`)
+/// is not an error and never a panic: the rest is dropped.
+pub fn stdout(text: &str) {
+    let mut out = std::io::stdout().lock();
+    let _ = out.write_all(text.as_bytes()).and_then(|()| out.flush());
+}
+
+/// Writes one line to stderr, ignoring a closed stderr.
+pub fn stderr_line(line: &str) {
+    let _ = writeln!(std::io::stderr().lock(), "{line}");
 }

@@ -11,7 +11,7 @@ use dissect_core::solver::{solve, Options};
 use serde_json::{json, Map, Value};
 
 use crate::args::SolveArgs;
-use crate::progress::Progress;
+use crate::progress::{self, Progress};
 use crate::{input, InputError, Status};
 
 /// Raised by the time limit and by Ctrl-C.
@@ -120,11 +120,11 @@ pub fn run(args: SolveArgs) -> Result<Status> {
                 None => "every piece count was tried".to_string(),
             }
         };
-        eprintln!(
+        progress::stderr_line(&format!(
             "no dissection found: {why} after {elapsed:.1} s; the best candidate ({}) had matching score E_M = {}",
             plural(outcome.last_pieces, "piece"),
             outcome.best_mismatch.map_or("n/a".to_string(), |m| m.to_string()),
-        );
+        ));
         return Ok(Status::NotFound);
     };
 
@@ -142,44 +142,9 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         );
     }
 
-    if !args.quiet {
-        let colour = match args.color.as_str() {
-            "always" => true,
-            "never" => false,
-            _ => std::io::stdout().is_terminal(),
-        };
-        for (path, pieces) in args.figures.iter().zip(&found.pieces) {
-            println!("{}:", path.display());
-            print!(
-                "{}",
-                dissect_core::ascii::draw(args.lattice, pieces, colour)
-            );
-            println!();
-        }
-        let areas = found.areas();
-        let list: Vec<String> = areas
-            .iter()
-            .enumerate()
-            .map(|(i, a)| format!("{}={a}", dissect_core::ascii::piece_letter(i)))
-            .collect();
-        println!("{}", plural(found.piece_count(), "piece"));
-        println!("piece areas: {}", list.join(" "));
-        println!("area variance: {:.2}", found.variance);
-        println!(
-            "time: {elapsed:.2} s{}",
-            if INTERRUPTED.load(Ordering::SeqCst) {
-                " (interrupted; best found so far)"
-            } else if outcome.stopped {
-                " (time limit reached; best found so far)"
-            } else {
-                ""
-            }
-        );
-    }
-
-    if let Some(dir) = &args.render {
-        crate::render::write_views(dir, &dissection)?;
-    }
+    // The solution file first: whatever happens next (a closed stdout, a
+    // failed rendering), the run is not lost.
+    let mut written = Ok(());
     if let Some(out) = &args.output {
         let mut extra = Map::new();
         extra.insert("pieces".into(), json!(found.piece_count()));
@@ -192,14 +157,54 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         extra.insert("stopped_early".into(), Value::Bool(outcome.stopped));
         let text = dissection.to_file(extra).to_json();
         if let Err(e) = std::fs::write(out, &text) {
-            // The run is not lost: the solution goes to stdout instead.
-            print!("{text}");
-            return Err(InputError(format!(
+            // The solution goes to stdout instead.
+            progress::stdout(&text);
+            written = Err(InputError(format!(
                 "{}: cannot write: {e} (the solution was printed on stdout instead)",
                 out.display()
-            ))
-            .into());
+            )));
         }
+    }
+
+    if !args.quiet {
+        let colour = match args.color.as_str() {
+            "always" => true,
+            "never" => false,
+            _ => std::io::stdout().is_terminal(),
+        };
+        let mut text = String::new();
+        for (path, pieces) in args.figures.iter().zip(&found.pieces) {
+            text += &format!(
+                "{}:\n{}\n",
+                path.display(),
+                dissect_core::ascii::draw(args.lattice, pieces, colour)
+            );
+        }
+        let list: Vec<String> = found
+            .areas()
+            .iter()
+            .enumerate()
+            .map(|(i, a)| format!("{}={a}", dissect_core::ascii::piece_letter(i)))
+            .collect();
+        text += &format!(
+            "{}\npiece areas: {}\narea variance: {:.2}\ntime: {elapsed:.2} s{}\n",
+            plural(found.piece_count(), "piece"),
+            list.join(" "),
+            found.variance,
+            if INTERRUPTED.load(Ordering::SeqCst) {
+                " (interrupted; best found so far)"
+            } else if outcome.stopped {
+                " (time limit reached; best found so far)"
+            } else {
+                ""
+            }
+        );
+        progress::stdout(&text);
+    }
+    written?;
+
+    if let Some(dir) = &args.render {
+        crate::render::write_views(dir, &dissection)?;
     }
     Ok(Status::Ok)
 }

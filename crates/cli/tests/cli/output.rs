@@ -201,3 +201,17 @@ fn three_figures_are_printed_and_written_in_order() {
         "note: the solution lists the figures rect.txt, bar.txt, ell.txt",
     ]);
 }
+
+#[test]
+fn a_closed_stdout_loses_nothing() {
+    // `dissect solve ... | head -0`: the solution is still written, and
+    // nothing panics.
+    let sb = Sandbox::new();
+    let [a, b] = pair(&sb);
+    sb.run_with_closed_stdout(&["solve", "-o", "out.json", &a, &b])
+        .expect_code(0);
+    assert_valid(&sb, "square", "out.json", &[&a, &b]);
+    sb.run_with_closed_stdout(&["info", &a, &b]).expect_code(0);
+    sb.run_with_closed_stdout(&["verify", "--solution", "out.json", &a, &b])
+        .expect_code(0);
+}

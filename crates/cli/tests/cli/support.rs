@@ -144,6 +144,28 @@ impl Sandbox {
         run
     }
 
+    /// Runs the binary with a stdout whose reader went away at once (as in
+    /// `dissect ... | head -0`). Panics if it panicked.
+    pub fn run_with_closed_stdout(&self, args: &[&str]) -> Run {
+        let start = Instant::now();
+        let mut child = self
+            .command(args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("start dissect");
+        drop(child.stdout.take());
+        let out = child.wait_with_output().expect("wait for dissect");
+        let run = Run {
+            code: out.status.code(),
+            stdout: String::new(),
+            stderr: String::from_utf8(out.stderr).expect("UTF-8 stderr"),
+            elapsed: start.elapsed(),
+        };
+        assert_no_panic(&run);
+        run
+    }
+
     /// Starts the binary with piped output; returns it once it has printed
     /// its first line on stderr (so its Ctrl-C handler is in place), with
     /// that line.
