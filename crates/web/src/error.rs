@@ -46,6 +46,13 @@ pub enum ApiError {
     /// Occurs when a path names no route or no solve.
     #[error("{0}")]
     NotFound(String),
+    /// Occurs when a request names the server by a host name other than
+    /// `localhost` (a DNS rebinding attempt by another web site).
+    #[error("{0}")]
+    Forbidden(String),
+    /// Occurs when a JSON route gets a body of another content type.
+    #[error("{0}")]
+    UnsupportedMediaType(String),
     /// Occurs when a route exists but not for this HTTP method.
     #[error("method not allowed here")]
     MethodNotAllowed,
@@ -76,6 +83,8 @@ impl ApiError {
             ApiError::Busy(_) => StatusCode::TOO_MANY_REQUESTS,
             ApiError::NotFound(_) => StatusCode::NOT_FOUND,
             ApiError::MethodNotAllowed => StatusCode::METHOD_NOT_ALLOWED,
+            ApiError::Forbidden(_) => StatusCode::FORBIDDEN,
+            ApiError::UnsupportedMediaType(_) => StatusCode::UNSUPPORTED_MEDIA_TYPE,
             ApiError::Internal(_) => StatusCode::INTERNAL_SERVER_ERROR,
         }
     }
@@ -93,6 +102,8 @@ impl ApiError {
             ApiError::Busy(_) => "busy",
             ApiError::NotFound(_) => "not_found",
             ApiError::MethodNotAllowed => "method_not_allowed",
+            ApiError::Forbidden(_) => "forbidden",
+            ApiError::UnsupportedMediaType(_) => "unsupported_media_type",
             ApiError::Internal(_) => "internal",
         }
     }

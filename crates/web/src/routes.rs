@@ -78,6 +78,7 @@ pub(crate) fn router_with_state(state: AppState) -> Router {
         .fallback(static_or_404)
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
         .layer(DefaultBodyLimit::max(MAX_BODY))
+        .layer(axum::middleware::from_fn(guard))
         .layer(tower_http::catch_panic::CatchPanicLayer::custom(
             |_: Box<dyn std::any::Any + Send>| {
                 ApiError::Internal("the request made the server fail".into()).into_response()
@@ -372,4 +373,45 @@ async fn rasterize_picture(
         .await
         .map_err(|e| ApiError::Internal(format!("the rasterizer failed: {e}")))??;
     Ok(Json(v))
+}
+
+/// Refuses what other web sites could make a browser send: requests naming
+/// the server by a host name other than `localhost` (DNS rebinding), and
+/// bodies that are not JSON on the JSON routes (a cross-site form post).
+async fn guard(req: axum::extract::Request, next: axum::middleware::Next) -> Response {
+    if let Some(host) = req.headers().get(header::HOST) {
+        let host = host.to_str().unwrap_or("");
+        let name = if host.starts_with('[') {
+            host.split(']').next().map(|h| &h[1..]).unwrap_or("")
+        } else {
+            host.split(':').next().unwrap_or("")
+        };
+        let ok = name.eq_ignore_ascii_case("localhost") || name.parse::<std::net::IpAddr>().is_ok();
+        if !ok {
+            return ApiError::Forbidden(format!(
+                "host {host:?} refused: open the studio by its IP address or as localhost"
+            ))
+            .into_response();
+        }
+    }
+    let path = req.uri().path();
+    if req.method() == axum::http::Method::POST
+        && path.starts_with("/api/")
+        && path != "/api/rasterize"
+    {
+        if let Some(ty) = req.headers().get(header::CONTENT_TYPE) {
+            let ty = ty.to_str().unwrap_or("");
+            if !ty
+                .trim_start()
+                .to_ascii_lowercase()
+                .starts_with("application/json")
+            {
+                return ApiError::UnsupportedMediaType(format!(
+                    "send JSON with content-type: application/json (got {ty:?})"
+                ))
+                .into_response();
+            }
+        }
+    }
+    next.run(req).await
 }

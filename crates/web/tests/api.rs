@@ -559,3 +559,40 @@ async fn pictures_are_rasterized_to_the_asked_cell_count() {
         assert!(message(&v).contains(want), "{query}: {v}");
     }
 }
+
+#[tokio::test]
+async fn other_sites_cannot_drive_the_studio() {
+    let app = app();
+    let send = |host: &'static str, ty: &'static str| {
+        let app = app.clone();
+        async move {
+            let req = Request::post("/api/figures")
+                .header("host", host)
+                .header("content-type", ty)
+                .body(Body::from(
+                    r##"{"lattice": "square", "figures": [{"text": "#"}]}"##,
+                ))
+                .unwrap();
+            let res = app.oneshot(req).await.unwrap();
+            let status = res.status();
+            let bytes = res.into_body().collect().await.unwrap().to_bytes();
+            (status, serde_json::from_slice::<Value>(&bytes).unwrap())
+        }
+    };
+    let (s, v) = send("127.0.0.1:7878", "application/json").await;
+    assert_eq!(s, StatusCode::OK, "{v}");
+    let (s, _) = send("localhost:7878", "application/json; charset=utf-8").await;
+    assert_eq!(s, StatusCode::OK);
+    let (s, _) = send("[::1]:7878", "application/json").await;
+    assert_eq!(s, StatusCode::OK);
+    // DNS rebinding: a foreign name that resolves to 127.0.0.1.
+    let (s, v) = send("evil.example:7878", "application/json").await;
+    assert_eq!((s, code(&v)), (StatusCode::FORBIDDEN, "forbidden"), "{v}");
+    // A cross-site form post.
+    let (s, v) = send("127.0.0.1:7878", "text/plain").await;
+    assert_eq!(
+        (s, code(&v)),
+        (StatusCode::UNSUPPORTED_MEDIA_TYPE, "unsupported_media_type"),
+        "{v}"
+    );
+}
