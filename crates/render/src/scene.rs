@@ -219,10 +219,31 @@ pub fn deepest_cell(lattice: LatticeKind, cells: &[Cell]) -> Cell {
             }
         }
     }
-    let mut sorted: Vec<Cell> = cells.to_vec();
+    // Among the deepest cells, the one nearest the piece's centre.
+    let n = cells.len() as f64;
+    let centre = cells.iter().fold([0.0, 0.0, 0.0], |m, c| {
+        let p = cell_centre(lattice, *c);
+        [m[0] + p[0] / n, m[1] + p[1] / n, m[2] + c[2] as f64 / n]
+    });
+    let depth = |c: &Cell| dist.get(c).copied().unwrap_or(0);
+    let deepest = cells.iter().map(depth).max().unwrap_or(0);
+    let mut sorted: Vec<Cell> = cells
+        .iter()
+        .copied()
+        .filter(|c| depth(c) == deepest)
+        .collect();
     sorted.sort();
+    let far = |c: &Cell| {
+        let p = cell_centre(lattice, *c);
+        let dz = if lattice == LatticeKind::Cubic {
+            c[2] as f64 - centre[2]
+        } else {
+            0.0
+        };
+        (p[0] - centre[0]).powi(2) + (p[1] - centre[1]).powi(2) + dz * dz
+    };
     *sorted
         .iter()
-        .max_by_key(|c| (dist.get(*c).copied().unwrap_or(0), std::cmp::Reverse(**c)))
+        .min_by(|a, b| far(a).total_cmp(&far(b)))
         .expect("a piece has cells")
 }
