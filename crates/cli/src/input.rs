@@ -15,10 +15,19 @@ fn read(path: &Path) -> Result<String> {
     let bytes = std::fs::read(path)
         .map_err(|e| InputError(format!("{}: cannot read: {e}", path.display())))?;
     String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let valid = std::str::from_utf8(&e.as_bytes()[..at]).unwrap_or_default();
+        let line = valid.matches('\n').count() + 1;
+        let column = valid
+            .rsplit('\n')
+            .next()
+            .unwrap_or_default()
+            .chars()
+            .count()
+            + 1;
         InputError(format!(
-            "{}: not UTF-8 text (byte {})",
-            path.display(),
-            e.utf8_error().valid_up_to()
+            "{}: line {line}, column {column}: not UTF-8 text (byte {at})",
+            path.display()
         ))
         .into()
     })

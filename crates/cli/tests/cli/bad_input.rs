@@ -143,7 +143,7 @@ fn unreadable_files_are_named() {
     rejects(
         &sb,
         &["solve", "latin1.txt", &ok],
-        &["latin1.txt: not UTF-8"],
+        &["latin1.txt: line 2, column 2: not UTF-8 text"],
     );
     rejects(
         &sb,
