@@ -210,13 +210,13 @@ pub struct Running {
 }
 
 impl Running {
-    /// Sends a signal (`INT`, `TERM`) with the system's `kill`.
+    /// Sends a signal (`INT`, `TERM`) with the shell's `kill` builtin (`sh`
+    /// is on every Debian; the `kill` program is not always).
     pub fn signal(&self, name: &str) {
-        let ok = Command::new("kill")
-            .arg(format!("-{name}"))
-            .arg(self.child.id().to_string())
+        let ok = Command::new("sh")
+            .args(["-c", &format!("kill -{name} {}", self.child.id())])
             .status()
-            .expect("run kill");
+            .expect("run sh");
         assert!(ok.success(), "kill -{name} failed");
     }
 
