@@ -1,7 +1,7 @@
 //! The corner/extent bound: two cells of one figure are *incompatible* when
 //! no connected piece can hold both, because they lie in different components
-//! of their figure or because no motion puts both inside one component of
-//! another figure. Pairwise incompatible cells need pairwise different
+//! of their figure or because no motion puts a path of the figure joining
+//! them inside another figure. Pairwise incompatible cells need pairwise different
 //! pieces, so a clique of the incompatibility graph is a lower bound.
 
 use std::collections::HashSet;
@@ -21,46 +21,95 @@ pub(crate) struct Incompatibility {
 
 impl Incompatibility {
     /// The graph of shape `k` against every other shape.
+    ///
+    /// Cells `a` and `b` are compatible with shape `h` when some motion `m`
+    /// puts both into `h` and joins them by a path of shape `k` that `m`
+    /// keeps inside `h` (a connected piece holding both contains such a
+    /// path). For every motion, the components of the cells it keeps inside
+    /// are computed once and every pair within one is marked compatible.
     pub fn of_shape(inst: &Instance, k: usize) -> Incompatibility {
         let s = &inst.shapes[k];
         let n = s.len();
         let words = n.div_ceil(64);
-        // For each other shape: the (residue of q, q' - q) of pairs inside one component.
-        let fits: Vec<HashSet<(Point, Point)>> = inst
-            .shapes
-            .iter()
-            .enumerate()
-            .filter(|(h, _)| *h != k)
-            .map(|(_, t)| {
-                let mut set = HashSet::with_capacity(t.len() * t.len());
-                for (i, q) in t.points.iter().enumerate() {
-                    let r = inst.residue(*q);
-                    for (j, q2) in t.points.iter().enumerate() {
-                        if t.component[i] == t.component[j] {
-                            set.insert((r, [q2[0] - q[0], q2[1] - q[1], q2[2] - q[2]]));
+        let mut rows = vec![vec![0u64; words]; n];
+        // Different components of the shape itself.
+        for (row, ca) in rows.iter_mut().zip(&s.component) {
+            for (b, cb) in s.component.iter().enumerate() {
+                if ca != cb {
+                    row[b / 64] |= 1 << (b % 64);
+                }
+            }
+        }
+        let mut inside = vec![false; n];
+        let mut seen = vec![false; n];
+        let mut stack = Vec::new();
+        for (h, target) in inst.shapes.iter().enumerate() {
+            if h == k {
+                continue;
+            }
+            let mut together = vec![vec![0u64; words]; n];
+            for g in &inst.syms {
+                let images: Vec<Point> = s.points.iter().map(|p| g.apply(*p)).collect();
+                let mut shifts: HashSet<Point> = HashSet::new();
+                for gp in &images {
+                    for q in &target.points {
+                        let t = [q[0] - gp[0], q[1] - gp[1], q[2] - gp[2]];
+                        if inst.is_translation(t) {
+                            shifts.insert(t);
                         }
                     }
                 }
-                set
-            })
-            .collect();
-        let mut rows = vec![vec![0u64; words]; n];
-        for a in 0..n {
-            for b in a + 1..n {
-                let apart = s.component[a] != s.component[b] || {
-                    let (p, p2) = (s.points[a], s.points[b]);
-                    let d = [p2[0] - p[0], p2[1] - p[1], p2[2] - p[2]];
-                    fits.iter().any(|set| {
-                        !inst
-                            .syms
-                            .iter()
-                            .any(|g| set.contains(&(inst.residue(g.apply(p)), g.apply(d))))
-                    })
-                };
-                if apart {
-                    rows[a][b / 64] |= 1 << (b % 64);
-                    rows[b][a / 64] |= 1 << (a % 64);
+                for t in shifts {
+                    for (c, gp) in images.iter().enumerate() {
+                        inside[c] =
+                            target
+                                .index
+                                .contains_key(&[gp[0] + t[0], gp[1] + t[1], gp[2] + t[2]]);
+                        seen[c] = false;
+                    }
+                    for start in 0..n {
+                        if !inside[start] || seen[start] {
+                            continue;
+                        }
+                        seen[start] = true;
+                        stack.clear();
+                        stack.push(start);
+                        let mut comp = vec![start];
+                        while let Some(u) = stack.pop() {
+                            for &v in &s.adj[u] {
+                                if inside[v] && !seen[v] {
+                                    seen[v] = true;
+                                    stack.push(v);
+                                    comp.push(v);
+                                }
+                            }
+                        }
+                        if comp.len() < 2 {
+                            continue;
+                        }
+                        let mut mask = vec![0u64; words];
+                        for &c in &comp {
+                            mask[c / 64] |= 1 << (c % 64);
+                        }
+                        for &c in &comp {
+                            for (w, m) in together[c].iter_mut().zip(&mask) {
+                                *w |= m;
+                            }
+                        }
+                    }
                 }
+            }
+            for (row, tog) in rows.iter_mut().zip(&together) {
+                for (w, t) in row.iter_mut().zip(tog) {
+                    *w |= !t;
+                }
+            }
+        }
+        // Keep the graph irreflexive and within n bits.
+        for (a, row) in rows.iter_mut().enumerate() {
+            row[a / 64] &= !(1 << (a % 64));
+            if n % 64 != 0 {
+                row[words - 1] &= (1u64 << (n % 64)) - 1;
             }
         }
         Incompatibility { n, rows }
