@@ -22,7 +22,7 @@ pub struct RasterOptions {
     /// The exact number of cells (triangles for `tri4`), or `None` for as
     /// many as the picture gives at `scale` and `threshold`.
     pub cells: Option<usize>,
-    /// Picture pixels per cell edge when `cells` is `None`.
+    /// Picture pixels (SVG user units) per cell edge when `cells` is `None`.
     pub scale: f64,
     /// The inside fraction from which a cell is filled when `cells` is `None`.
     pub threshold: f64,
@@ -68,6 +68,8 @@ pub(crate) struct Volume {
     pub ink: Vec<f32>,
     /// Whether z is scaled like x and y (meshes) or one layer per z (slices).
     pub z_scaled: bool,
+    /// Samples per unit of the input (an SVG is drawn enlarged).
+    pub zoom: f64,
 }
 
 impl Volume {
@@ -110,7 +112,7 @@ fn decode(bytes: &[u8], invert: bool) -> Result<Volume, RenderError> {
         .skip_while(|b| b.is_ascii_whitespace() || *b == 0xEF || *b == 0xBB || *b == 0xBF)
         .take(1)
         .collect();
-    let (w, h, rgba) = if head == b"<" {
+    let (w, h, rgba, zoom) = if head == b"<" {
         let text = std::str::from_utf8(bytes)
             .map_err(|_| RenderError::NotAPicture("SVG that is not UTF-8 text".into()))?;
         let tree = resvg::usvg::Tree::from_str(text, &resvg::usvg::Options::default())
@@ -123,13 +125,19 @@ fn decode(bytes: &[u8], invert: bool) -> Result<Volume, RenderError> {
             pm.width() as usize,
             pm.height() as usize,
             pm.data().to_vec(),
+            zoom as f64,
         )
     } else {
         let img = image::load_from_memory(bytes).map_err(|e| {
             RenderError::NotAPicture(format!("not a PNG, JPEG or SVG picture ({e})"))
         })?;
         let img = img.to_rgba8();
-        (img.width() as usize, img.height() as usize, img.into_raw())
+        (
+            img.width() as usize,
+            img.height() as usize,
+            img.into_raw(),
+            1.0,
+        )
     };
     if w == 0 || h == 0 {
         return Err(RenderError::EmptyPicture);
@@ -159,6 +167,7 @@ fn decode(bytes: &[u8], invert: bool) -> Result<Volume, RenderError> {
         d: 1,
         ink,
         z_scaled: false,
+        zoom,
     })
 }
 
@@ -188,14 +197,25 @@ pub fn rasterize(pictures: &[&[u8]], opts: &RasterOptions) -> Result<Rasterized,
             }
         }
     }
+    // Slices are sampled in the first picture's units.
+    let zoom = layers[0].zoom;
     let vol = Volume {
         w,
         h,
         d: layers.len(),
         ink,
         z_scaled: false,
+        zoom,
     };
-    sample(&vol, opts.lattice, opts.cells, opts.scale, opts.threshold)
+    let mut r = sample(
+        &vol,
+        opts.lattice,
+        opts.cells,
+        opts.scale * zoom,
+        opts.threshold,
+    )?;
+    r.scale /= zoom;
+    Ok(r)
 }
 
 /// The inside fraction of every cell at scale `s` with the grid's origin at

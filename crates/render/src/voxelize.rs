@@ -124,6 +124,7 @@ pub fn voxelize(stl: &[u8], opts: &VoxelOptions) -> Result<Rasterized, RenderErr
         d,
         ink,
         z_scaled: true,
+        zoom: 1.0,
     };
     let scale_fine = opts.scale.map_or(res / 10.0, |s| s / h);
     let mut r = sample(&vol, LatticeKind::Cubic, opts.cells, scale_fine, 0.5)?;
