@@ -83,9 +83,22 @@ impl Mesh {
 
     /// The number of edges not shared by exactly two triangles, whatever
     /// their direction (0 for a closed mesh).
+    ///
+    /// Vertices closer than a millionth of the mesh's size count as one, so
+    /// rounding noise of the program that wrote the file does not open it.
     pub fn open_edges(&self) -> usize {
-        let key = |p: [f64; 3]| p.map(|v| (v as f32).to_bits());
-        let mut count: HashMap<([u32; 3], [u32; 3]), i32> = HashMap::new();
+        let mut lo = [f64::MAX; 3];
+        let mut hi = [f64::MIN; 3];
+        for p in self.triangles.iter().flatten() {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+        let eps = if size > 0.0 { size * 1e-6 } else { 1.0 };
+        let key = |p: [f64; 3]| p.map(|v| (v / eps).round() as i64);
+        let mut count: HashMap<([i64; 3], [i64; 3]), i32> = HashMap::new();
         for t in &self.triangles {
             for i in 0..3 {
                 let (a, b) = (key(t[i]), key(t[(i + 1) % 3]));
