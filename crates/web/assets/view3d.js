@@ -60,7 +60,11 @@ export function show(host, solution, colour) {
   }
   const centre = new THREE.Vector3((offset - 2) / 2, maxExtent / 2, maxExtent / 2);
   const camera = new THREE.PerspectiveCamera(40, width / height, 0.1, 1000);
-  camera.position.set(centre.x, centre.y + offset * 0.6, centre.z + offset * 0.9 + 4);
+  // Far enough for the whole row of figures to fit the view, seen from above and in front.
+  const tan = Math.tan((40 / 2) * Math.PI / 180);
+  const fit = Math.max((offset - 2) / (2 * tan * (width / height)), maxExtent / (2 * tan));
+  const dir = new THREE.Vector3(0.35, 0.75, 1).normalize();
+  camera.position.copy(centre).addScaledVector(dir, fit * 1.4 + maxExtent * 1.5);
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.target.copy(centre);
   controls.update();
