@@ -1,0 +1,200 @@
+//! End-to-end tests of the exact mode: `dissect bound`, `dissect solve
+//! --exact` and `dissect solve --prove`. Every solution written is checked by
+//! `dissect verify` and by `shared/tools/verify.py`.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const SQUARES_3_4: &str = "####..###\n####..###\n####..###\n####.....\n";
+const SQUARE_5: &str = "#####\n#####\n#####\n#####\n#####\n";
+/// A rectangle with a hole: no 2-piece dissection into the 4x4 square.
+const HOLE: &str = "#####\n#..##\n#..##\n#####\n";
+const SQUARE_4: &str = "####\n####\n####\n####\n";
+
+fn dissect(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_dissect"))
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .expect("dissect runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn files(dir: &Path, figures: &[(&str, &str)]) {
+    for (name, text) in figures {
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+}
+
+fn golden(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/golden")
+        .join(name)
+}
+
+/// Compares with a golden file; `UPDATE_GOLDEN=1` rewrites it.
+fn check_golden(name: &str, actual: &str) {
+    let path = golden(name);
+    if std::env::var_os("UPDATE_GOLDEN").is_some() {
+        std::fs::write(&path, actual).unwrap();
+    }
+    let expected = std::fs::read_to_string(&path).expect("golden file exists");
+    assert_eq!(actual, expected, "differs from {}", path.display());
+}
+
+fn python_verify(dir: &Path, lattice: &str, solution: &str, figures: &[&str]) {
+    let verifier = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/tools/verify.py");
+    let out = Command::new("python3")
+        .current_dir(dir)
+        .arg(verifier)
+        .args(["--lattice", lattice, "--solution", solution])
+        .args(figures)
+        .output()
+        .expect("python3 runs");
+    assert!(
+        out.status.success() && stdout(&out).contains("valid:"),
+        "verify.py: {} {}",
+        stdout(&out),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn bound_prints_the_corner_argument_last() {
+    let dir = tempfile::tempdir().unwrap();
+    files(dir.path(), &[("a.txt", SQUARES_3_4), ("b.txt", SQUARE_5)]);
+    let out = dissect(dir.path(), &["bound", "--quiet", "a.txt", "b.txt"]);
+    assert!(out.status.success());
+    check_golden("bound-squares-3-4.txt", &stdout(&out));
+}
+
+#[test]
+fn bound_refutes_two_pieces_by_sat() {
+    let dir = tempfile::tempdir().unwrap();
+    files(dir.path(), &[("a.txt", HOLE), ("b.txt", SQUARE_4)]);
+    let out = dissect(
+        dir.path(),
+        &["bound", "--max-pieces", "2", "a.txt", "b.txt"],
+    );
+    assert!(out.status.success());
+    let text = stdout(&out);
+    let last = text.lines().last().unwrap();
+    assert!(
+        last.starts_with("lower bound: 3 (SAT: no 2-piece dissection, "),
+        "{text}"
+    );
+    // The progress went to stderr.
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cheap bound: 2"));
+}
+
+#[test]
+fn exact_solve_writes_an_optimal_verified_solution() {
+    let dir = tempfile::tempdir().unwrap();
+    files(dir.path(), &[("a.txt", SQUARES_3_4), ("b.txt", SQUARE_5)]);
+    let out = dissect(
+        dir.path(),
+        &[
+            "solve", "--exact", "--color", "never", "a.txt", "b.txt", "-o", "s.json",
+        ],
+    );
+    assert!(out.status.success());
+    let text = stdout(&out);
+    assert!(
+        text.lines()
+            .last()
+            .unwrap()
+            .starts_with("4 pieces — optimal (4 cells of b.txt"),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("s.json")).unwrap()).unwrap();
+    assert_eq!(json["lower_bound"], 4);
+    assert_eq!(json["optimal"], true);
+    let v = dissect(
+        dir.path(),
+        &["verify", "--solution", "s.json", "a.txt", "b.txt"],
+    );
+    assert!(v.status.success(), "{}", stdout(&v));
+    python_verify(dir.path(), "square", "s.json", &["a.txt", "b.txt"]);
+}
+
+#[test]
+fn exact_solve_on_tri4_and_cubic() {
+    let dir = tempfile::tempdir().unwrap();
+    files(
+        dir.path(),
+        &[
+            ("t.txt", "FF\n"),
+            ("d.txt", "6C\n39\n"),
+            ("c.txt", "##\n##\n\n##\n##\n"),
+            ("r.txt", "####\n####\n"),
+        ],
+    );
+    for (lattice, a, b) in [("tri4", "t.txt", "d.txt"), ("cubic", "c.txt", "r.txt")] {
+        let out = dissect(
+            dir.path(),
+            &[
+                "solve",
+                "--exact",
+                "--quiet",
+                "--lattice",
+                lattice,
+                a,
+                b,
+                "-o",
+                "s.json",
+            ],
+        );
+        assert!(out.status.success(), "{lattice}");
+        assert!(stdout(&out).contains("optimal"), "{}", stdout(&out));
+        python_verify(dir.path(), lattice, "s.json", &[a, b]);
+    }
+}
+
+#[test]
+fn prove_runs_the_heuristic_beside_the_proof() {
+    let dir = tempfile::tempdir().unwrap();
+    files(dir.path(), &[("a.txt", HOLE), ("b.txt", SQUARE_4)]);
+    let out = dissect(
+        dir.path(),
+        &[
+            "solve",
+            "--prove",
+            "--quiet",
+            "--time-limit",
+            "60",
+            "a.txt",
+            "b.txt",
+            "-o",
+            "s.json",
+        ],
+    );
+    assert!(out.status.success());
+    let text = stdout(&out);
+    assert!(
+        text.starts_with("3 pieces — optimal (no 2-piece dissection exists; proof "),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("s.json")).unwrap()).unwrap();
+    assert_eq!(json["optimal"], true);
+    assert_eq!(json["lower_bound"], 3);
+    python_verify(dir.path(), "square", "s.json", &["a.txt", "b.txt"]);
+}
+
+#[test]
+fn bound_names_the_file_on_bad_input() {
+    let dir = tempfile::tempdir().unwrap();
+    files(dir.path(), &[("a.txt", "###\n"), ("b.txt", "#x\n")]);
+    let out = dissect(dir.path(), &["bound", "a.txt", "b.txt"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("b.txt") && err.contains("column"), "{err}");
+    files(dir.path(), &[("b.txt", "##\n")]);
+    let out = dissect(dir.path(), &["bound", "a.txt", "b.txt"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("different areas"));
+}
