@@ -80,6 +80,9 @@ impl ExactObserver for Lines {
             } if total.is_power_of_two() || *total == *added => eprintln!(
                 "[exact {t:6.1} s] {pieces} pieces: a model had split pieces, {total} connectivity cuts so far"
             ),
+            ExactEvent::ConnectivityEncoded { pieces } => eprintln!(
+                "[exact {t:6.1} s] {pieces} pieces: a model had split pieces, connectivity encoded"
+            ),
             ExactEvent::Refuted(b) => eprintln!(
                 "[exact {t:6.1} s] lower bound {} ({})",
                 b.value,

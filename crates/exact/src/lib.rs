@@ -29,6 +29,7 @@ pub(crate) mod incompatible_clique;
 pub(crate) mod instance;
 pub mod motion;
 pub mod placement_encoding;
+pub(crate) mod reachability_encoding;
 pub(crate) mod sat_backend;
 pub mod search;
 

@@ -38,6 +38,8 @@ use crate::sat_backend::Sat;
 /// empty; every `motion[f][i]` (f ≥ 1) is non-empty.
 pub(crate) struct Encoding {
     pub k: usize,
+    /// `anchors[i]`: a cell of shape 0 fixed to piece `i`, when there is one.
+    pub anchors: Vec<usize>,
     pub cell: Vec<Vec<Vec<i32>>>,
     pub motion: Vec<Vec<Vec<(i32, Motion)>>>,
 }
@@ -89,7 +91,7 @@ pub(crate) fn encode(
     }
     // Symmetry breaking on piece order.
     let q = clique.len().min(k);
-    let anchor: Vec<usize> = if q > 0 { clique[..q].to_vec() } else { vec![0] };
+    let mut anchor: Vec<usize> = if q > 0 { clique[..q].to_vec() } else { vec![0] };
     for (i, &c) in clique.iter().take(q).enumerate() {
         sat.add(&[cell[0][i][c]]);
     }
@@ -197,7 +199,13 @@ pub(crate) fn encode(
         }
         motion.push(per_piece);
     }
-    Encoding { k, cell, motion }
+    anchor.truncate(k);
+    Encoding {
+        k,
+        anchors: anchor,
+        cell,
+        motion,
+    }
 }
 
 impl Encoding {

@@ -13,6 +13,7 @@ use crate::incompatible_clique::Incompatibility;
 use crate::instance::Instance;
 use crate::motion::MotionSet;
 use crate::placement_encoding::{encode, EncodingSize};
+use crate::reachability_encoding::add_connectivity;
 use crate::sat_backend::Sat;
 use crate::ExactError;
 
@@ -43,6 +44,9 @@ pub struct ExactOptions {
     pub restricted_time: Duration,
     /// Connectivity cuts added per split piece and model.
     pub cuts_per_piece: usize,
+    /// On the first model with a split piece, add the full connectivity
+    /// encoding (reachability from each piece's root) instead of cuts.
+    pub eager_connectivity: bool,
 }
 
 impl Default for ExactOptions {
@@ -54,6 +58,7 @@ impl Default for ExactOptions {
             max_pieces: None,
             restricted_time: Duration::from_secs(10),
             cuts_per_piece: 4,
+            eager_connectivity: true,
         }
     }
 }
@@ -81,6 +86,11 @@ pub enum ExactEvent {
         added: usize,
         /// Cuts added for this K in all.
         total: usize,
+    },
+    /// A model had split pieces; the full connectivity encoding was added.
+    ConnectivityEncoded {
+        /// K.
+        pieces: usize,
     },
     /// No dissection into `bound.value - 1` pieces: the bound rose.
     Refuted(Bound),
@@ -147,6 +157,7 @@ struct Context<'a> {
     upper: &'a AtomicUsize,
     observer: &'a dyn ExactObserver,
     cuts_per_piece: usize,
+    eager_connectivity: bool,
 }
 
 impl Context<'_> {
@@ -166,6 +177,7 @@ impl Context<'_> {
             },
         });
         let mut total = 0;
+        let mut connected_encoding = false;
         loop {
             match sat.solve(deadline) {
                 None => return Pass::Unknown,
@@ -180,6 +192,18 @@ impl Context<'_> {
                     let found = cuts(&self.inst.shapes, &pieces, self.cuts_per_piece);
                     if found.is_empty() {
                         return Pass::Found(pieces);
+                    }
+                    if self.eager_connectivity && !connected_encoding {
+                        add_connectivity(
+                            &mut sat,
+                            &self.inst.shapes[0],
+                            &enc.cell[0],
+                            &enc.anchors,
+                        );
+                        connected_encoding = true;
+                        self.observer
+                            .on_event(&ExactEvent::ConnectivityEncoded { pieces: k });
+                        continue;
                     }
                     for cut in &found {
                         for piece in &enc.cell[cut.shape] {
@@ -239,6 +263,7 @@ pub fn search(
         upper,
         observer,
         cuts_per_piece: options.cuts_per_piece.max(1),
+        eager_connectivity: options.eager_connectivity,
     };
     let mut outcome = ExactOutcome {
         lower_bound: cheap.bound,
