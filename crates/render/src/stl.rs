@@ -70,7 +70,9 @@ impl PhysicalOptions {
 }
 
 /// One binary STL per piece (named `piece-A.stl`, ...), made from the
-/// pieces as they lie in the first figure.
+/// pieces as they lie in the first figure. Fails rather than write a mesh
+/// that is not closed and manifold (a piece touching itself at a corner
+/// needs a clearance).
 pub fn render(
     scene: &Scene,
     opts: &PhysicalOptions,
@@ -79,6 +81,12 @@ pub fn render(
         .map(|i| {
             let name = format!("piece-{}", scene.label(i));
             let mesh = piece_mesh(scene, i, opts)?;
+            if mesh.bad_edges() > 0 {
+                return Err(RenderError::BadOption(format!(
+                    "piece {} touches itself along an edge or at a corner, so its mesh cannot be manifold without a clearance: give --clearance > 0",
+                    scene.label(i)
+                )));
+            }
             Ok((format!("{name}.stl"), mesh.to_binary_stl(&name)))
         })
         .collect()

@@ -285,6 +285,9 @@ fn every_stl_is_closed_and_manifold_with_the_right_volume() {
         // walls come apart there (without, four walls share one edge).
         if clearance > 0.0 {
             check_meshes(&PINCH, &opts);
+        } else {
+            let e = stl::render(&scene(&PINCH), &opts).unwrap_err();
+            assert!(e.to_string().contains("--clearance > 0"), "{e}");
         }
     }
 }
