@@ -26,7 +26,8 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     let figures = input::figures(&args.figures, args.lattice)?;
     input::check_equal_areas(&args.figures, &figures)?;
     if let Some(t) = args.time_limit {
-        if !(t.is_finite() && t >= 0.0) {
+        // `inf` is allowed: no limit.
+        if t.is_nan() || t < 0.0 {
             return Err(InputError(format!(
                 "--time-limit must be a number of seconds >= 0, got {t}"
             ))
@@ -75,11 +76,16 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         STOP.store(true, Ordering::SeqCst);
     }
     let finished = Arc::new((Mutex::new(false), Condvar::new()));
-    let timer = args.time_limit.map(|secs| {
+    // A limit too far away to be a point in time is no limit.
+    let deadline = args.time_limit.and_then(|secs| {
+        Duration::try_from_secs_f64(secs)
+            .ok()
+            .and_then(|d| start.checked_add(d))
+    });
+    let timer = deadline.map(|deadline| {
         let finished = Arc::clone(&finished);
         std::thread::spawn(move || {
             let (lock, cv) = &*finished;
-            let deadline = Instant::now() + Duration::from_secs_f64(secs);
             let mut done = lock.lock().expect("timer lock");
             while !*done {
                 let now = Instant::now();

@@ -143,3 +143,16 @@ fn usage_errors_exit_2() {
     // The figures were fine all along.
     sb.run(&["solve", "-q", &a, &b]).expect_code(0);
 }
+
+#[test]
+fn far_away_time_limits_are_no_limit() {
+    let sb = Sandbox::new();
+    let a = sb.write("bar.txt", BAR);
+    let b = sb.write("ell.txt", ELL);
+    for limit in ["inf", "1e300", "1e15", "3600"] {
+        let out = format!("out-{limit}.json");
+        sb.run(&["solve", "-q", "--time-limit", limit, "-o", &out, &a, &b])
+            .expect_code(0);
+        assert_eq!(assert_valid(&sb, "square", &out, &[&a, &b]), 2);
+    }
+}
