@@ -6,6 +6,7 @@ mod distance;
 mod flood_fill;
 mod levels;
 mod matching;
+mod multi_figure;
 mod refine;
 mod shape;
 mod util;
