@@ -20,10 +20,21 @@ fn figures(lattice: LatticeKind, texts: &[&str]) -> Vec<Figure> {
 }
 
 fn run(figs: &[Figure], mirror: bool, mode: Mode, max_pieces: Option<usize>) -> ExactOutcome {
+    run_with(figs, mirror, mode, max_pieces, true)
+}
+
+fn run_with(
+    figs: &[Figure],
+    mirror: bool,
+    mode: Mode,
+    max_pieces: Option<usize>,
+    eager_connectivity: bool,
+) -> ExactOutcome {
     let options = ExactOptions {
         mirror,
         mode,
         max_pieces,
+        eager_connectivity,
         ..ExactOptions::default()
     };
     let stop = AtomicBool::new(false);
@@ -172,6 +183,10 @@ impl Brute {
 /// The exact answer agrees with brute force; the lower bound proved by SAT
 /// below it is exactly the brute-force minimum; the cheap bound is below it.
 fn check(lattice: LatticeKind, mirror: bool, texts: &[&str]) -> usize {
+    check_with(lattice, mirror, texts, true)
+}
+
+fn check_with(lattice: LatticeKind, mirror: bool, texts: &[&str], eager: bool) -> usize {
     let figs = figures(lattice, texts);
     let (brute, partition) = Brute::new(lattice, mirror).minimum(&figs);
     assert!(
@@ -185,7 +200,7 @@ fn check(lattice: LatticeKind, mirror: bool, texts: &[&str]) -> usize {
         "cheap bound {cheap} exceeds the minimum {brute}"
     );
 
-    let exact = run(&figs, mirror, Mode::Minimum, None);
+    let exact = run_with(&figs, mirror, Mode::Minimum, None, eager);
     let found = exact
         .found
         .clone()
@@ -197,7 +212,7 @@ fn check(lattice: LatticeKind, mirror: bool, texts: &[&str]) -> usize {
     assert_eq!(exact.lower_bound.value, brute);
 
     if brute > 1 {
-        let bound = run(&figs, mirror, Mode::LowerBound, Some(brute - 1));
+        let bound = run_with(&figs, mirror, Mode::LowerBound, Some(brute - 1), eager);
         assert_eq!(
             bound.lower_bound.value, brute,
             "the bound proved below the minimum is the minimum for {texts:?}"
@@ -217,6 +232,27 @@ fn square_figures_match_brute_force() {
     assert_eq!(check(s, true, &["##..\n.##.\n..##", "###\n###"]), 2);
     assert_eq!(check(s, true, &["###\n#.#\n###", "####\n####"]), 2);
     assert_eq!(check(s, true, &["####\n####", "##\n##\n##\n##"]), 1);
+}
+
+#[test]
+fn lazy_connectivity_cuts_match_brute_force() {
+    let s = LatticeKind::Square;
+    assert_eq!(check_with(s, true, &["#.#\n###", "#####"], false), 3);
+    assert_eq!(
+        check_with(s, true, &["###\n#.#\n###", "####\n####"], false),
+        2
+    );
+    assert_eq!(
+        check_with(s, true, &["##..\n.##.\n..##", "###\n###"], false),
+        2
+    );
+    check_with(LatticeKind::Tri4, true, &["FF", "6C\n39"], false);
+    check_with(
+        LatticeKind::Cubic,
+        false,
+        &["###\n#..\n\n##.\n...", "###\n###"],
+        false,
+    );
 }
 
 #[test]
@@ -379,4 +415,59 @@ fn python_verifier_accepts_a_sat_dissection() {
         String::from_utf8_lossy(&out.stderr)
     );
     assert!(text.contains("valid: 2 pieces"), "verify.py said {text}");
+}
+
+/// Counts the connectivity events of a search.
+#[derive(Default)]
+struct SplitModels(std::sync::Mutex<usize>);
+
+impl dissect_exact::ExactObserver for SplitModels {
+    fn on_event(&self, event: &dissect_exact::ExactEvent) {
+        if matches!(
+            event,
+            dissect_exact::ExactEvent::Cuts { .. }
+                | dissect_exact::ExactEvent::ConnectivityEncoded { .. }
+        ) {
+            *self.0.lock().unwrap() += 1;
+        }
+    }
+}
+
+#[test]
+fn split_models_are_repaired_both_ways() {
+    // The relaxation has 2-piece models with split pieces; connectivity
+    // (eager encoding or lazy cuts) refutes them, and 3 pieces exist.
+    let figs = figures(
+        LatticeKind::Square,
+        &[
+            "######\n#.##.#\n######\n#.##.#",
+            "#####\n#####\n#####\n#####",
+        ],
+    );
+    for eager in [true, false] {
+        let options = ExactOptions {
+            mode: Mode::LowerBound,
+            max_pieces: Some(2),
+            eager_connectivity: eager,
+            ..ExactOptions::default()
+        };
+        let seen = SplitModels::default();
+        let out = search(
+            &figs,
+            &options,
+            &AtomicBool::new(false),
+            &AtomicUsize::new(usize::MAX),
+            &seen,
+        )
+        .unwrap();
+        assert_eq!(out.lower_bound.value, 3, "eager: {eager}");
+        assert!(*seen.0.lock().unwrap() > 0, "a split model was met");
+        let exact = run_with(&figs, true, Mode::Minimum, None, eager);
+        let found = exact.found.clone().expect("3 pieces exist");
+        assert_eq!(
+            dissect_core::verify::verify_pieces(LatticeKind::Square, true, &figs, &found),
+            Ok(3)
+        );
+        assert!(exact.optimal());
+    }
 }
