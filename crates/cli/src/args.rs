@@ -36,6 +36,15 @@ pub enum Command {
     Voxelize(crate::render::VoxelizeArgs),
 }
 
+/// A thread count from 0 (one per core) to 256.
+fn thread_count(s: &str) -> Result<usize, String> {
+    let n: usize = s.parse().map_err(|_| format!("{s:?} is not a whole number"))?;
+    if n > 256 {
+        return Err(format!("{n} threads is too many (at most 256; 0 means one per core)"));
+    }
+    Ok(n)
+}
+
 fn lattice(s: &str) -> Result<LatticeKind, String> {
     s.parse()
         .map_err(|e: dissect_core::lattice::UnknownLattice| e.to_string())
@@ -52,8 +61,8 @@ pub struct SolveArgs {
     /// Seed of every random choice; the same seed gives the same result for any --threads.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Worker threads (default: one per core).
-    #[arg(long, default_value_t = 0)]
+    /// Worker threads (default: one per core; at most 256).
+    #[arg(long, default_value_t = 0, value_parser = thread_count)]
     pub threads: usize,
     /// Stop after this many seconds and report the best dissection found so far.
     #[arg(long, value_name = "SECS")]

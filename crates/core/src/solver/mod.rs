@@ -26,6 +26,9 @@ use crate::lattice::{Cell, LatticeKind};
 use candidate::{Candidate, Problem, Score};
 use shape::Shape;
 
+/// The most worker threads a search may ask for.
+pub const MAX_THREADS: usize = 1024;
+
 /// Solver settings. `Default` gives the paper's constants.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Options {
@@ -258,6 +261,12 @@ pub fn solve(
             modulus: lattice.modulus(),
         },
     );
+    if options.threads > MAX_THREADS {
+        return Err(SolveError::Threads(format!(
+            "{} threads asked for; at most {MAX_THREADS}",
+            options.threads
+        )));
+    }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.threads)
         .build()
