@@ -404,6 +404,37 @@ fn rasterize_a_disc_hits_the_exact_cell_count() {
 }
 
 #[test]
+fn rasterize_reads_jpeg_and_transparent_png() {
+    let png = disc_png(200, 70.0);
+    let img = image::load_from_memory(&png).unwrap().to_rgb8();
+    let mut jpeg = Vec::new();
+    img.write_to(
+        &mut std::io::Cursor::new(&mut jpeg),
+        image::ImageFormat::Jpeg,
+    )
+    .unwrap();
+    let opts = RasterOptions {
+        cells: Some(144),
+        ..RasterOptions::default()
+    };
+    assert_eq!(rasterize(&[&jpeg], &opts).unwrap().figure.len(), 144);
+    // Opaque = inside, whatever the colour: a white disc on transparency.
+    let rgba = image::RgbaImage::from_fn(100, 100, |x, y| {
+        let d = ((x as f64 - 49.5).powi(2) + (y as f64 - 49.5).powi(2)).sqrt();
+        image::Rgba([255, 255, 255, if d <= 40.0 { 255 } else { 0 }])
+    });
+    let mut bytes = Vec::new();
+    rgba.write_to(
+        &mut std::io::Cursor::new(&mut bytes),
+        image::ImageFormat::Png,
+    )
+    .unwrap();
+    let r = rasterize(&[&bytes], &opts).unwrap();
+    assert_eq!(r.figure.len(), 144);
+    assert_eq!(r.figure.stats().holes, 0);
+}
+
+#[test]
 fn tri4_discs_use_half_squares_on_their_diagonals() {
     let pic = disc_png(300, 120.0);
     let opts = RasterOptions {
