@@ -243,7 +243,7 @@ test('an uploaded picture is rasterized to the asked number of cells', async () 
   assert.match(await page.textContent('[data-testid=areas]'), /Areas differ by 50 cells/);
 });
 
-test('tri4: a click fills the triangle under the mouse', async () => {
+test('tri4: a click fills the triangle under the mouse; a tri4 solution is checked', async () => {
   await open();
   await page.selectOption('[data-testid=lattice]', 'tri4');
   await tool('pen');
@@ -255,6 +255,19 @@ test('tri4: a click fills the triangle under the mouse', async () => {
   await tool('rect');
   await drag(1, [0, 0], [1, 0]);
   assert.equal(await count(1).textContent(), '8 cells');
+
+  // The shipped tri4 example: solved, drawn in triangles, checked by verify.py.
+  await page.selectOption('[data-testid=example]', 'tri-triangle8-to-rect4x8');
+  await page.waitForFunction(() => window.studio.figures.length === 2 && window.studio.figures[1].cells.size === 128);
+  await solveAndWait(30);
+  const pieces = Number(/^(\d+) pieces/.exec(await page.textContent('[data-testid=result-summary]'))[1]);
+  assert.equal((await coloursOn('solved-0')).length, pieces);
+  const json = await saveDownload(() => page.click('[data-testid=download-json]'));
+  const figs = [];
+  for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
+  const out = execFileSync('python3', [VERIFY, '--lattice', 'tri4', '--solution', json, ...figs], { encoding: 'utf8' });
+  assert.match(out, new RegExp(`valid: ${pieces} pieces`));
+  assert.ok(await page.isDisabled('[data-testid=download-ldraw]'), 'no LEGO triangles');
 });
 
 test('cubic: layers are edited apart; the solution turns in 3D', async () => {
