@@ -289,6 +289,12 @@ test('cubic: layers are edited apart; the solution turns in 3D', async () => {
   await page.waitForFunction(() => window.studio.figures.length === 2 && window.studio.figures[1].cells.size === 56);
   assert.match(await page.textContent('[data-testid=areas]'), /every figure has 56 cells/);
   await solveAndWait(90);
+  const pieces = Number(/^(\d+) pieces/.exec(await page.textContent('[data-testid=result-summary]'))[1]);
+  const json = await saveDownload(() => page.click('[data-testid=download-json]'));
+  const figs = [];
+  for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
+  const out = execFileSync('python3', [VERIFY, '--lattice', 'cubic', '--solution', json, ...figs], { encoding: 'utf8' });
+  assert.match(out, new RegExp(`valid: ${pieces} pieces`));
   await page.waitForSelector('#view3d canvas');
   const v3 = await page.locator('#view3d canvas').boundingBox();
   await page.mouse.move(v3.x + v3.width / 2, v3.y + v3.height / 2);
