@@ -117,14 +117,17 @@ pub(crate) fn split_worst<R: rand::Rng>(
             .collect(),
         problem.geo.clone(),
     );
+    // The best try that really splits: both labels survive in every figure
+    // (refinement can empty a small piece everywhere).
     let mut best: Option<(Candidate, Score)> = None;
     for _ in 0..options.split_tries.max(1) {
         let (c, s) = level_one(&sub, options, rng, stop);
-        if best.as_ref().is_none_or(|(_, b)| s.value < b.value) {
+        let splits = c.labels.iter().all(|l| l.contains(&0) && l.contains(&1));
+        if splits && best.as_ref().is_none_or(|(_, b)| s.value < b.value) {
             best = Some((c, s));
         }
     }
-    let (split, _) = best.expect("at least one try");
+    let Some((split, _)) = best else { return false };
     let new_label = cand.k as u16;
     for (f, m) in members.iter().enumerate() {
         for (i, &c) in m.iter().enumerate() {

@@ -274,8 +274,9 @@ fn the_worst_piece_depends_on_the_pivot() {
 /// `split_worst` from `pivot` splits, in every figure, only the piece
 /// written `letters[f]` there (the pivot's worst piece and its matches):
 /// the old label and the new one `k` share out exactly its cells, every
-/// other cell keeps its (aligned) label, and for some seed both labels
-/// appear in every figure. With `strict`, that must hold for every seed.
+/// other cell keeps its (aligned) label, both labels appear in every figure
+/// whenever it returns true, and it returns true for some seed. With
+/// `strict`, it must return true for every seed.
 fn check_split(
     lattice: LatticeKind,
     figures: &[&str],
@@ -295,19 +296,19 @@ fn check_split(
         );
     }
     let mut split_everywhere = 0;
+    let mut refused = 0;
+    let tried = seeds.end - seeds.start;
     for seed in seeds {
         let mut c = cand.clone();
-        assert!(split_worst(
-            &problem,
-            &mut c,
-            pivot,
-            &small(),
-            &mut rng(seed),
-            &go()
-        ));
+        if !split_worst(&problem, &mut c, pivot, &small(), &mut rng(seed), &go()) {
+            // No try split the piece in every figure: nothing but the
+            // renaming of alignment happened.
+            assert_eq!(c, base, "seed {seed}: a failed split changed the cut");
+            refused += 1;
+            continue;
+        }
         assert_eq!(c.k, cand.k + 1);
         let new = cand.k;
-        let mut everywhere = true;
         for (f, fig) in figs.iter().enumerate() {
             let old_piece = cells_with(fig, &base.labels[f], w);
             let kept = cells_with(fig, &c.labels[f], w);
@@ -321,18 +322,22 @@ fn check_split(
                     assert_eq!(before, after, "cell {i} changed: {ctx}");
                 }
             }
-            if strict {
-                assert!(!kept.is_empty(), "old label gone: {ctx}");
-                assert!(!split_off.is_empty(), "new label missing: {ctx}");
-            }
-            everywhere &= !kept.is_empty() && !split_off.is_empty();
+            // A split that returned true splits in every figure.
+            assert!(!kept.is_empty(), "old label gone: {ctx}");
+            assert!(!split_off.is_empty(), "new label missing: {ctx}");
         }
-        split_everywhere += everywhere as usize;
+        split_everywhere += 1;
     }
     assert!(
         split_everywhere > 0,
         "{figures:?}, pivot {pivot}: never split in every figure"
     );
+    if strict {
+        assert_eq!(
+            refused, 0,
+            "{figures:?}, pivot {pivot}: {refused} of {tried} seeds refused to split"
+        );
+    }
 }
 
 #[test]
@@ -358,19 +363,18 @@ fn split_worst_splits_the_pivot_piece_and_its_matches() {
     check_split(Tri4, &tri, 1, &['B', 'A', 'B'], 0..8, false);
 }
 
-/// Known bug: the level-1 runs on the sub-figures can lose a label (with
+/// Regression: the level-1 runs on the sub-figures can lose a label (with
 /// three figures label switching also runs in the pivot and can switch away
-/// every cell of a small piece; copy-paste then spreads the empty piece),
-/// and `split_worst` keeps such a run: it returns true with the old or the
-/// new label empty in some figure (here seed 5 of the triple: label C
-/// empty in all three figures, the parent merely renamed; seed 6 of
-/// `PIVOTS` from pivot 1).
+/// every cell of a small piece; copy-paste then spreads the empty piece).
+/// `split_worst` used to keep such a run and return true with the old or the
+/// new label empty in some figure (seed 5 of the triple: label C empty in all
+/// three figures; seed 6 of `PIVOTS` from pivot 1). Now it keeps only tries
+/// that split in every figure, or returns false.
 #[test]
-#[ignore = "bug: split_worst can leave the old or the new label empty in a figure"]
 fn split_worst_always_splits_in_every_figure() {
     let triple = [PIVOT, "CCCC|CCAA|BBBB", "BBB.A|BCCCA|..CCC"];
-    check_split(Square, &triple, 0, &['C', 'C', 'C'], 0..16, true);
-    check_split(Square, &PIVOTS, 1, &['C', 'B', 'A'], 0..16, true);
+    check_split(Square, &triple, 0, &['C', 'C', 'C'], 0..16, false);
+    check_split(Square, &PIVOTS, 1, &['C', 'B', 'A'], 0..16, false);
 }
 
 #[test]
