@@ -317,3 +317,15 @@ fn natural_key(s: &str) -> Vec<(String, u64)> {
     out.push((text, digits.parse().unwrap_or(0)));
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::natural_key;
+
+    #[test]
+    fn slices_sort_by_their_numbers() {
+        let mut names = vec!["slice-10.png", "slice-2.png", "slice-1.png"];
+        names.sort_by_key(|n| natural_key(n));
+        assert_eq!(names, ["slice-1.png", "slice-2.png", "slice-10.png"]);
+    }
+}
