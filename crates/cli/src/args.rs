@@ -38,9 +38,13 @@ pub enum Command {
 
 /// A thread count from 0 (one per core) to 256.
 fn thread_count(s: &str) -> Result<usize, String> {
-    let n: usize = s.parse().map_err(|_| format!("{s:?} is not a whole number"))?;
+    let n: usize = s
+        .parse()
+        .map_err(|_| format!("{s:?} is not a whole number"))?;
     if n > 256 {
-        return Err(format!("{n} threads is too many (at most 256; 0 means one per core)"));
+        return Err(format!(
+            "{n} threads is too many (at most 256; 0 means one per core)"
+        ));
     }
     Ok(n)
 }
