@@ -98,6 +98,9 @@ pub struct SolveArgs {
     /// Extra rounds of explorations for a level whose best candidate is a near miss (0: the paper's schedule).
     #[arg(long, default_value_t = 1, value_name = "N")]
     pub extra_rounds: usize,
+    /// Stop refining an exploration after this many iterations without fewer conflicts (0: the paper's loop).
+    #[arg(long, default_value_t = 20, value_name = "N")]
+    pub patience: usize,
     /// Also prove a lower bound by SAT beside the search, and say whether the result is optimal.
     #[arg(long)]
     pub prove: bool,
@@ -142,4 +145,26 @@ pub struct InfoArgs {
     /// The figures.
     #[arg(required = true, num_args = 1.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
+}
+
+impl SolveArgs {
+    /// The solver settings these flags ask for, with `threads` worker threads.
+    pub fn solver_options(&self, threads: usize) -> dissect_core::solver::Options {
+        dissect_core::solver::Options {
+            mirror: !self.no_mirror && self.lattice.lattice().supports_mirror(),
+            seed: self.seed,
+            threads,
+            max_pieces: self.max_pieces,
+            area_weight: self.area_weight,
+            explorations: self.explorations,
+            keep: self.keep,
+            iterations: self.iterations,
+            split_penalty: self.split_penalty,
+            split_tries: self.split_tries,
+            full_levels: self.full_level,
+            extra_rounds: self.extra_rounds,
+            patience: self.patience,
+            ..dissect_core::solver::Options::default()
+        }
+    }
 }

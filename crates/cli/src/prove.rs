@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result};
 use dissect_core::io::Dissection;
-use dissect_core::solver::{solve, Options};
+use dissect_core::solver::solve;
 use dissect_core::{Cell, LatticeKind};
 use dissect_exact::{search, Bound, ExactEvent, ExactObserver, ExactOptions, Mode, Reason};
 use serde_json::{json, Map, Value};
@@ -219,27 +219,15 @@ pub fn solve_exact(args: SolveArgs) -> Result<Status> {
         });
         let heuristic = (args.prove && !args.exact).then(|| {
             s.spawn(|| {
-                let options = Options {
-                    mirror,
-                    seed: args.seed,
-                    // One core for the SAT solver, the rest for the heuristic.
-                    threads: if args.threads == 0 {
-                        std::thread::available_parallelism()
-                            .map_or(1, |n| n.get().saturating_sub(1))
-                            .max(1)
-                    } else {
-                        args.threads
-                    },
-                    max_pieces: args.max_pieces,
-                    area_weight: args.area_weight,
-                    explorations: args.explorations,
-                    keep: args.keep,
-                    iterations: args.iterations,
-                    split_penalty: args.split_penalty,
-                    split_tries: args.split_tries,
-                    full_levels: args.full_level,
-                    ..Options::default()
+                // One core for the SAT solver, the rest for the heuristic.
+                let threads = if args.threads == 0 {
+                    std::thread::available_parallelism()
+                        .map_or(1, |n| n.get().saturating_sub(1))
+                        .max(1)
+                } else {
+                    args.threads
                 };
+                let options = args.solver_options(threads);
                 let r = solve(&figures, &options, &heuristic_stop, &());
                 if let Ok(Some(found)) = r.as_ref().map(|o| o.found.as_ref()) {
                     upper.fetch_min(found.piece_count(), Ordering::SeqCst);

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::Result;
 use dissect_core::io::Dissection;
-use dissect_core::solver::{solve, Options};
+use dissect_core::solver::solve;
 use serde_json::{json, Map, Value};
 
 use crate::args::SolveArgs;
@@ -46,21 +46,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     }
     let lattice = args.lattice.lattice();
     let mirror = !args.no_mirror && lattice.supports_mirror();
-    let options = Options {
-        mirror,
-        seed: args.seed,
-        threads: args.threads,
-        max_pieces: args.max_pieces,
-        area_weight: args.area_weight,
-        explorations: args.explorations,
-        keep: args.keep,
-        iterations: args.iterations,
-        split_penalty: args.split_penalty,
-        split_tries: args.split_tries,
-        full_levels: args.full_level,
-        extra_rounds: args.extra_rounds,
-        ..Options::default()
-    };
+    let options = args.solver_options(args.threads);
 
     // Ctrl-C: the first stops the search (the best result is kept), a
     // second one exits at once.
