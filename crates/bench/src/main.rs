@@ -101,6 +101,12 @@ struct Args {
     /// Run every exploration of the final level.
     #[arg(long)]
     full_level: bool,
+    /// Refinement patience (0: the paper's loop).
+    #[arg(long, value_name = "N")]
+    patience: Option<usize>,
+    /// Extra rounds of explorations for near-miss levels (0: the paper's schedule).
+    #[arg(long, value_name = "N")]
+    extra_rounds: Option<usize>,
 }
 
 fn parse_lattice(s: &str) -> Result<LatticeKind, String> {
@@ -215,6 +221,8 @@ fn plan(args: &Args) -> Result<Plan> {
         split_penalty: args.split_penalty.unwrap_or(d.split_penalty),
         split_tries: args.split_tries.unwrap_or(d.split_tries),
         full_levels: args.full_level || d.full_levels,
+        patience: args.patience.unwrap_or(d.patience),
+        extra_rounds: args.extra_rounds.unwrap_or(d.extra_rounds),
         ..d
     };
     Ok(Plan {
@@ -253,7 +261,7 @@ fn settings(plan: &Plan, args: &Args, style: Style) -> String {
         |l: Option<Duration>| l.map_or("none".to_string(), |d| format!("{} s", report::secs(d)));
     let seeds: Vec<String> = plan.seeds.iter().map(|s| s.to_string()).collect();
     let text = format!(
-        "seeds {}; time limit {} (2D), {} (3D); threads {}; N = {}, R = {}, Nb = {}, area weight {}, mirror {}",
+        "seeds {}; time limit {} (2D), {} (3D); threads {}; N = {}, R = {}, Nb = {}, area weight {}, mirror {}, patience {}, extra rounds {}",
         seeds.join(","),
         limit(plan.time_limit_2d),
         limit(plan.time_limit_3d),
@@ -267,6 +275,8 @@ fn settings(plan: &Plan, args: &Args, style: Style) -> String {
         o.keep,
         o.area_weight,
         o.mirror,
+        o.patience,
+        o.extra_rounds,
     );
     match style {
         Style::Markdown => format!("Settings: {text}.\n"),
