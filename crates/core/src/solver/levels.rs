@@ -45,17 +45,8 @@ pub(crate) fn level_one<R: rand::Rng>(
         flood_fill(shape, &mut l, Fallback::Random(2), rng);
         labels.push(l);
     }
-    let mut cand = Candidate { labels, k: 2 };
-    refine_with_patience(
-        problem,
-        &mut cand,
-        options.iterations,
-        options.patience,
-        rng,
-        stop,
-    );
-    let score = cand.evaluate(problem, lambda(options, 1), options.split_penalty);
-    (cand, score)
+    let cand = Candidate { labels, k: 2 };
+    refine_and_score(problem, cand, 1, options, rng, stop)
 }
 
 /// One level-ℓ exploration: `parent` (with ℓ pieces) gets one more piece,
@@ -76,6 +67,18 @@ pub(crate) fn grow<R: rand::Rng>(
     if !split {
         piece_from_mismatches(problem, &mut cand, rng);
     }
+    refine_and_score(problem, cand, level, options, rng, stop)
+}
+
+/// Refines a candidate (with the options' patience) and scores it at `level`.
+fn refine_and_score<R: rand::Rng>(
+    problem: &Problem,
+    mut cand: Candidate,
+    level: usize,
+    options: &Options,
+    rng: &mut R,
+    stop: &AtomicBool,
+) -> (Candidate, Score) {
     refine_with_patience(
         problem,
         &mut cand,
