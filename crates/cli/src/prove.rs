@@ -41,6 +41,12 @@ pub struct BoundArgs {
     /// Print only the last line.
     #[arg(long, short)]
     pub quiet: bool,
+    /// Solve nothing: write to FILE, as DIMACS CNF, the formula the search
+    /// would solve for "at most K pieces" with K given by --max-pieces (the
+    /// relaxation without connectivity: UNSAT proves that no K-piece
+    /// dissection exists). For timing other SAT solvers.
+    #[arg(long, value_name = "FILE", requires = "max_pieces")]
+    pub dimacs: Option<PathBuf>,
     /// The figures (text files, see FORMAT.md).
     #[arg(required = true, num_args = 2.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
@@ -139,6 +145,19 @@ fn names(paths: &[PathBuf]) -> Vec<String> {
 pub fn bound(args: BoundArgs) -> Result<Status> {
     let figures = input::figures(&args.figures, args.lattice)?;
     input::check_equal_areas(&args.figures, &figures)?;
+    if let (Some(path), Some(k)) = (&args.dimacs, args.max_pieces) {
+        let cnf = dissect_exact::dimacs(&figures, !args.no_mirror, k)
+            .map_err(|e| InputError(e.to_string()))?;
+        std::fs::write(path, &cnf.text)
+            .with_context(|| format!("cannot write {}", path.display()))?;
+        println!(
+            "wrote {}: at most {k} pieces, {} variables, {} clauses",
+            path.display(),
+            cnf.vars,
+            cnf.clauses
+        );
+        return Ok(Status::Ok);
+    }
     let deadline = check_time_limit(args.time_limit)?;
     catch_ctrl_c();
     let options = ExactOptions {

@@ -91,6 +91,37 @@ fn bound_refutes_two_pieces_by_sat() {
 }
 
 #[test]
+fn bound_writes_the_dimacs_of_k_pieces() {
+    let dir = tempfile::tempdir().unwrap();
+    files(dir.path(), &[("a.txt", HOLE), ("b.txt", SQUARE_4)]);
+    let out = dissect(
+        dir.path(),
+        &[
+            "bound",
+            "--max-pieces",
+            "2",
+            "--dimacs",
+            "k2.cnf",
+            "a.txt",
+            "b.txt",
+        ],
+    );
+    assert!(out.status.success());
+    assert!(stdout(&out).starts_with("wrote k2.cnf: at most 2 pieces, "));
+    let cnf = std::fs::read_to_string(dir.path().join("k2.cnf")).unwrap();
+    let header: Vec<&str> = cnf.lines().next().unwrap().split_whitespace().collect();
+    assert_eq!(header[..2], ["p", "cnf"]);
+    let clauses: usize = header[3].parse().unwrap();
+    assert_eq!(cnf.lines().count(), clauses + 1);
+    // --dimacs needs the K of --max-pieces.
+    let out = dissect(
+        dir.path(),
+        &["bound", "--dimacs", "k.cnf", "a.txt", "b.txt"],
+    );
+    assert!(!out.status.success());
+}
+
+#[test]
 fn exact_solve_writes_an_optimal_verified_solution() {
     let dir = tempfile::tempdir().unwrap();
     files(dir.path(), &[("a.txt", SQUARES_3_4), ("b.txt", SQUARE_5)]);

@@ -36,7 +36,9 @@ pub mod search;
 pub use bound::{cheap_bound, Bound, Reason};
 pub use motion::MotionSet;
 pub use placement_encoding::EncodingSize;
-pub use search::{search, ExactEvent, ExactObserver, ExactOptions, ExactOutcome, Mode};
+pub use search::{
+    dimacs, search, Dimacs, ExactEvent, ExactObserver, ExactOptions, ExactOutcome, Mode,
+};
 
 /// Occurs when figures cannot be given to the exact search.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

@@ -27,6 +27,8 @@ pub(crate) struct Sat<'a> {
     solver: cadical::Solver<StopCheck<'a>>,
     next_var: i32,
     clauses: usize,
+    /// The clauses added so far as DIMACS lines, when recording.
+    recorded: Option<String>,
 }
 
 impl<'a> Sat<'a> {
@@ -43,7 +45,21 @@ impl<'a> Sat<'a> {
             solver,
             next_var: 1,
             clauses: 0,
+            recorded: None,
         }
+    }
+
+    /// Keeps a copy of every clause added from now on, for [`Sat::dimacs`].
+    pub fn record(&mut self) {
+        self.recorded.get_or_insert_with(String::new);
+    }
+
+    /// The clauses recorded since [`Sat::record`] as a DIMACS CNF (the header
+    /// counts all variables and the recorded clauses).
+    pub fn dimacs(&self) -> Option<(String, usize)> {
+        let body = self.recorded.as_ref()?;
+        let count = body.lines().count();
+        Some((format!("p cnf {} {count}\n{body}", self.vars()), count))
     }
 
     /// A fresh variable.
@@ -55,6 +71,13 @@ impl<'a> Sat<'a> {
 
     pub fn add(&mut self, clause: &[i32]) {
         self.clauses += 1;
+        if let Some(text) = &mut self.recorded {
+            use std::fmt::Write;
+            for lit in clause {
+                let _ = write!(text, "{lit} ");
+            }
+            text.push_str("0\n");
+        }
         self.solver.add_clause(clause.iter().copied());
     }
 

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use dissect_core::{Cell, Figure};
 
-use crate::bound::{cheap, Bound, Reason};
+use crate::bound::{cheap, Bound, Cheap, Reason};
 use crate::connectivity_cut::cuts;
 use crate::incompatible_clique::Incompatibility;
 use crate::instance::Instance;
@@ -241,20 +241,7 @@ pub fn search(
     let start = Instant::now();
     let cheap = cheap(figures, options.mirror)?;
     observer.on_event(&ExactEvent::CheapBound(cheap.bound.clone()));
-    let reference = if cheap.clique.len() >= 2 {
-        cheap.clique_figure
-    } else {
-        0
-    };
-    let clique: Vec<usize> = if reference == cheap.clique_figure {
-        cheap.clique.clone()
-    } else {
-        Vec::new()
-    };
-    let inst = Instance::new(figures, options.mirror, reference);
-    let incompat: Vec<Incompatibility> = (0..inst.shapes.len())
-        .map(|k| Incompatibility::of_shape(&inst, k))
-        .collect();
+    let (inst, clique, incompat) = model_inputs(figures, options.mirror, &cheap);
     let ctx = Context {
         inst: &inst,
         clique: &clique,
@@ -351,6 +338,62 @@ pub fn search(
     Ok(outcome)
 }
 
+/// The instance (reference shape: the one holding the cheap bound's
+/// clique, when it has two or more cells), that clique and the
+/// incompatibility graph of every shape.
+fn model_inputs(
+    figures: &[Figure],
+    mirror: bool,
+    cheap: &Cheap,
+) -> (Instance, Vec<usize>, Vec<Incompatibility>) {
+    let reference = if cheap.clique.len() >= 2 {
+        cheap.clique_figure
+    } else {
+        0
+    };
+    let clique: Vec<usize> = if reference == cheap.clique_figure {
+        cheap.clique.clone()
+    } else {
+        Vec::new()
+    };
+    let inst = Instance::new(figures, mirror, reference);
+    let incompat: Vec<Incompatibility> = (0..inst.shapes.len())
+        .map(|k| Incompatibility::of_shape(&inst, k))
+        .collect();
+    (inst, clique, incompat)
+}
+
+/// A CNF in DIMACS form.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Dimacs {
+    /// The text: a `p cnf VARS CLAUSES` header, then one clause a line.
+    pub text: String,
+    /// Variables.
+    pub vars: usize,
+    /// Clauses.
+    pub clauses: usize,
+}
+
+/// The CNF that [`search`] solves for "at most `k` pieces" with all
+/// motions, as DIMACS: the relaxation without connectivity (the cuts and the
+/// connectivity encoding are added lazily only after a model), so UNSAT
+/// proves that no `k`-piece dissection exists. For other SAT solvers and
+/// for measuring them; it solves nothing.
+pub fn dimacs(figures: &[Figure], mirror: bool, k: usize) -> Result<Dimacs, ExactError> {
+    let cheap = cheap(figures, mirror)?;
+    let (inst, clique, incompat) = model_inputs(figures, mirror, &cheap);
+    let stop = AtomicBool::new(false);
+    let mut sat = Sat::new(&stop, None);
+    sat.record();
+    encode(&inst, &mut sat, k, MotionSet::All, &clique, &incompat);
+    let (text, clauses) = sat.dimacs().expect("recording");
+    Ok(Dimacs {
+        text,
+        vars: sat.vars(),
+        clauses,
+    })
+}
+
 /// Cell indices per shape to sorted cells per figure, in input order.
 fn to_cells(inst: &Instance, pieces: &[Vec<Vec<usize>>]) -> Vec<Vec<Vec<Cell>>> {
     let per_shape: Vec<Vec<Vec<Cell>>> = pieces
@@ -367,4 +410,53 @@ fn to_cells(inst: &Instance, pieces: &[Vec<Vec<usize>>]) -> Vec<Vec<Vec<Cell>>> 
         })
         .collect();
     inst.to_input_order(&per_shape)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dissect_core::io::parse_figure;
+    use dissect_core::LatticeKind;
+
+    /// Parses `d.text`, checks its header against the clauses and solves it
+    /// with the crate's own backend.
+    fn solve_dimacs(d: &Dimacs) -> bool {
+        let mut lines = d.text.lines();
+        let header: Vec<&str> = lines.next().expect("header").split_whitespace().collect();
+        assert_eq!(header[..2], ["p", "cnf"]);
+        assert_eq!(header[2].parse::<usize>().unwrap(), d.vars);
+        assert_eq!(header[3].parse::<usize>().unwrap(), d.clauses);
+        let stop = AtomicBool::new(false);
+        let mut sat = Sat::new(&stop, None);
+        for _ in 0..d.vars {
+            sat.var();
+        }
+        let mut clauses = 0;
+        for line in lines {
+            let lits: Vec<i32> = line
+                .split_whitespace()
+                .map(|x| x.parse().expect("a literal"))
+                .collect();
+            assert_eq!(lits.last(), Some(&0), "clause ends with 0");
+            let clause = &lits[..lits.len() - 1];
+            assert!(clause.iter().all(|l| l.unsigned_abs() as usize <= d.vars));
+            sat.add(clause);
+            clauses += 1;
+        }
+        assert_eq!(clauses, d.clauses);
+        sat.solve(None).expect("no deadline")
+    }
+
+    #[test]
+    fn dimacs_header_matches_and_solves_as_expected() {
+        let figs: Vec<Figure> = ["###\n###\n", "######\n"]
+            .iter()
+            .map(|t| parse_figure(t, LatticeKind::Square).expect("figure"))
+            .collect();
+        let one = dimacs(&figs, true, 1).expect("valid figures");
+        assert!(one.vars > 0 && one.clauses > 0);
+        assert!(!solve_dimacs(&one), "a 2×3 rectangle is no 1×6 bar");
+        let two = dimacs(&figs, true, 2).expect("valid figures");
+        assert!(solve_dimacs(&two), "two 1×3 bars");
+    }
 }
