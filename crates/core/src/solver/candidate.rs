@@ -1,6 +1,8 @@
 //! Candidates (one labelling of every figure) and their objective.
 
 use crate::distance::{Geometry, Side};
+use crate::figure::Figure;
+use crate::lattice::Cell;
 use crate::matching::{match_pieces, PairMatching};
 use crate::piece::Pieces;
 use crate::solver::shape::{LabelGrid, Layout, Shape};
@@ -82,6 +84,31 @@ pub(crate) struct Aligned {
 }
 
 impl Candidate {
+    /// The cells of each label of each figure (`[f][label]`), `figures` being
+    /// the figures the shapes were made from. Labels that no figure uses
+    /// (a piece that vanished) are dropped.
+    pub(crate) fn cells_by_label(&self, figures: &[Figure]) -> Vec<Vec<Vec<Cell>>> {
+        let mut pieces: Vec<Vec<Vec<Cell>>> = figures
+            .iter()
+            .zip(&self.labels)
+            .map(|(fig, labels)| {
+                let mut p = vec![Vec::new(); self.k];
+                for (c, &l) in fig.cells().iter().zip(labels) {
+                    p[l as usize].push(*c);
+                }
+                p
+            })
+            .collect();
+        for i in (0..self.k).rev() {
+            if pieces.iter().all(|p| p[i].is_empty()) {
+                for p in &mut pieces {
+                    p.remove(i);
+                }
+            }
+        }
+        pieces
+    }
+
     /// The pieces of figure `f`.
     pub(crate) fn pieces(&self, problem: &Problem, f: usize) -> Pieces {
         Pieces::of(&problem.shapes[f], &self.labels[f], self.k)

@@ -272,26 +272,7 @@ pub fn solve(
         .build()
         .map_err(|e| SolveError::Threads(e.to_string()))?;
     let to_found = |cand: &Candidate, score: &Score, level: usize| -> Found {
-        let mut pieces: Vec<Vec<Vec<Cell>>> = figures
-            .iter()
-            .zip(&cand.labels)
-            .map(|(fig, labels)| {
-                let mut p = vec![Vec::new(); cand.k];
-                for (c, &l) in fig.cells().iter().zip(labels) {
-                    p[l as usize].push(*c);
-                }
-                p
-            })
-            .collect();
-        // Labels empty in every figure (the piece vanished) are dropped.
-        let keep: Vec<bool> = (0..cand.k).map(|i| !pieces[0][i].is_empty()).collect();
-        for p in pieces.iter_mut() {
-            let mut i = 0;
-            p.retain(|_| {
-                i += 1;
-                keep[i - 1]
-            });
-        }
+        let pieces = cand.cells_by_label(figures);
         Found {
             pieces,
             level,

@@ -135,25 +135,7 @@ pub(crate) fn pieces_of(problem: &Problem, cand: &Candidate, f: usize) -> Pieces
 /// The cells of each label of each figure (`[f][label]`), for the verifier.
 /// Labels that no figure uses are dropped, as the solver drops them.
 pub(crate) fn cells_by_label(figures: &[Figure], cand: &Candidate) -> Vec<Vec<Vec<Cell>>> {
-    let mut pieces: Vec<Vec<Vec<Cell>>> = figures
-        .iter()
-        .zip(&cand.labels)
-        .map(|(fig, labels)| {
-            let mut p = vec![Vec::new(); cand.k];
-            for (c, &l) in fig.cells().iter().zip(labels) {
-                p[l as usize].push(*c);
-            }
-            p
-        })
-        .collect();
-    for i in (0..cand.k).rev() {
-        if pieces.iter().all(|p| p[i].is_empty()) {
-            for p in &mut pieces {
-                p.remove(i);
-            }
-        }
-    }
-    pieces
+    cand.cells_by_label(figures)
 }
 
 /// Whether the candidate is a valid dissection by the independent verifier.
