@@ -1,6 +1,8 @@
-//! The SAT backend: CaDiCaL through the `cadical` crate. The only module
-//! that names the backend, so another one can replace it here alone.
+//! The SAT backend: the pure-Rust `batsat` crate (a MiniSat descendant). The
+//! only module that names the backend, so another one can replace it here
+//! alone.
 
+use batsat::{lbool, Lit, SolverInterface, SolverOpts};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Instant;
 
@@ -12,8 +14,8 @@ struct StopCheck<'a> {
     upper: Option<(&'a AtomicUsize, usize)>,
 }
 
-impl cadical::Callbacks for StopCheck<'_> {
-    fn terminate(&mut self) -> bool {
+impl batsat::Callbacks for StopCheck<'_> {
+    fn stop(&self) -> bool {
         self.stop.load(Ordering::Relaxed)
             || self.deadline.is_some_and(|d| Instant::now() >= d)
             || self
@@ -24,8 +26,10 @@ impl cadical::Callbacks for StopCheck<'_> {
 
 /// An incremental SAT solver with DIMACS literals.
 pub(crate) struct Sat<'a> {
-    solver: cadical::Solver<StopCheck<'a>>,
+    solver: batsat::Solver<StopCheck<'a>>,
     next_var: i32,
+    /// A buffer for the literals of the clause being added.
+    lits: Vec<Lit>,
     clauses: usize,
     /// The clauses added so far as DIMACS lines, when recording.
     recorded: Option<String>,
@@ -35,15 +39,18 @@ impl<'a> Sat<'a> {
     /// A solver that gives up when `stop` rises or when `upper.0` falls to
     /// `upper.1` or below.
     pub fn new(stop: &'a AtomicBool, upper: Option<(&'a AtomicUsize, usize)>) -> Sat<'a> {
-        let mut solver = cadical::Solver::new();
-        solver.set_callbacks(Some(StopCheck {
-            stop,
-            deadline: None,
-            upper,
-        }));
+        let solver = batsat::Solver::new(
+            SolverOpts::default(),
+            StopCheck {
+                stop,
+                deadline: None,
+                upper,
+            },
+        );
         Sat {
             solver,
             next_var: 1,
+            lits: Vec::new(),
             clauses: 0,
             recorded: None,
         }
@@ -66,6 +73,7 @@ impl<'a> Sat<'a> {
     pub fn var(&mut self) -> i32 {
         let v = self.next_var;
         self.next_var += 1;
+        self.solver.var_of_int(v.unsigned_abs() - 1);
         v
     }
 
@@ -78,7 +86,14 @@ impl<'a> Sat<'a> {
             }
             text.push_str("0\n");
         }
-        self.solver.add_clause(clause.iter().copied());
+        self.lits.clear();
+        for &lit in clause {
+            let var = self.solver.var_of_int(lit.unsigned_abs() - 1);
+            self.lits.push(Lit::new(var, lit > 0));
+        }
+        // `false` only means the clauses are already unsatisfiable, which
+        // the next solve reports.
+        self.solver.add_clause_reuse(&mut self.lits);
     }
 
     pub fn clauses(&self) -> usize {
@@ -92,14 +107,20 @@ impl<'a> Sat<'a> {
     /// `Some(true)`: satisfiable, `Some(false)`: unsatisfiable, `None`:
     /// stopped or past the deadline.
     pub fn solve(&mut self, deadline: Option<Instant>) -> Option<bool> {
-        if let Some(cb) = self.solver.get_callbacks() {
-            cb.deadline = deadline;
+        self.solver.cb_mut().deadline = deadline;
+        let answer = self.solver.solve_limited(&[]);
+        if answer == lbool::TRUE {
+            Some(true)
+        } else if answer == lbool::FALSE {
+            Some(false)
+        } else {
+            None
         }
-        self.solver.solve()
     }
 
     /// The value of a variable in the last model.
     pub fn value(&self, var: i32) -> bool {
-        self.solver.value(var) == Some(true)
+        let var = batsat::Var::unsafe_from_idx(var.unsigned_abs() - 1);
+        self.solver.value_var(var) == lbool::TRUE
     }
 }
