@@ -8,7 +8,7 @@
 //!   would not fit inside another figure; the 8 corners of a 6³ cube against
 //!   three separate smaller cubes force 8 pieces).
 //! * The question "is there a dissection into at most K pieces?" as SAT
-//!   ([`placement_encoding`]), solved by CaDiCaL. Without connectivity the
+//!   ([`placement_encoding`]), solved by batsat. Without connectivity the
 //!   encoding is a relaxation: UNSAT proves the lower bound K+1. Connectivity
 //!   is added lazily ([`connectivity_cut`]): a model whose pieces are split
 //!   gets clauses that forbid the split, so a model that survives is a real
@@ -19,7 +19,7 @@
 //!
 //! Architecture invariant: like the core, this crate does no I/O and never
 //! prints; progress leaves through [`search::ExactObserver`]. The SAT backend
-//! (the `cadical` crate) is a dependency of this crate only, and only
+//! (the `batsat` crate) is a dependency of this crate only, and only
 //! [`sat_backend`] names it.
 
 pub mod bound;
