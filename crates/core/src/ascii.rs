@@ -24,7 +24,7 @@ fn colour(i: usize) -> u8 {
 /// letter `i`; `.` is a cell of no piece). Square: one character per cell.
 /// `tri4`: a 3×3 block per square whose side middles show the four
 /// triangles and whose corners and centre draw the diagonals where pieces
-/// meet (see [`tri4_block_row`]). `cubic`: the z layers side by side, left to
+/// meet (see `tri4_block_row`). `cubic`: the z layers side by side, left to
 /// right, each under a `z=N` header.
 pub fn draw(lattice: LatticeKind, pieces: &[Vec<Cell>], colour_on: bool) -> String {
     let owner: HashMap<Cell, usize> = pieces

@@ -7,8 +7,6 @@
 use crate::lattice::Symmetry;
 use crate::piece::Pieces;
 use crate::solver::shape::Layout;
-#[allow(unused_imports)] // for the docs
-use crate::solver::shape::Shape;
 use crate::transform::Transform;
 
 /// The symmetries and translation lattice the solver may use.
@@ -22,7 +20,7 @@ pub(crate) struct Geometry {
 }
 
 /// One side of a distance computation: a labelled shape's pieces, its cells'
-/// addresses under every symmetry (see [`Shape::moved`]; read on the side
+/// addresses under every symmetry (see [`Shape::moved`](crate::solver::shape::Shape::moved); read on the side
 /// moved from) and its labels by address (see [`Layout::label_grid`]; read on
 /// the side moved onto, may be empty on the other).
 #[derive(Clone, Copy)]

@@ -78,8 +78,9 @@ pub(crate) struct Score {
 /// The pieces of every figure, with labels aligned to a pivot figure.
 pub(crate) struct Aligned {
     pub(crate) pieces: Vec<Pieces>,
-    /// `matchings[f]` carries the pivot's pieces onto figure `f`'s pieces of
-    /// the same label (`None` for the pivot itself).
+    /// `matchings[f]` (`None` for the pivot itself): its `transforms[a]` and
+    /// `dists[a]` carry the pivot's piece `a` onto figure `f`'s piece now
+    /// labelled `a`; its `partner` keeps the labels `f` had before alignment.
     pub(crate) matchings: Vec<Option<PairMatching>>,
 }
 

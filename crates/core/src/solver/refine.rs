@@ -160,20 +160,8 @@ pub(crate) fn mismatched_cells(problem: &Problem, cand: &mut Candidate) -> Vec<V
 
 /// Runs up to `iterations` refinement iterations (every figure once as the
 /// pivot). Stops early when nothing changes, when the candidate becomes a
-/// valid dissection, or when `stop` is raised. This is the paper's loop (the
-/// search itself calls [`refine_with_patience`]).
-#[cfg_attr(not(test), allow(dead_code))]
-pub(crate) fn refine<R: rand::Rng>(
-    problem: &Problem,
-    cand: &mut Candidate,
-    iterations: usize,
-    rng: &mut R,
-    stop: &AtomicBool,
-) {
-    refine_with_patience(problem, cand, iterations, 0, rng, stop);
-}
-
-/// [`refine`], also stopping once the number of conflicting cells has not
+/// valid dissection, or when `stop` is raised (the paper's loop), and also
+/// once the number of conflicting cells has not
 /// improved on its best for `patience` iterations (0: never). Random label
 /// switching keeps changing labels on a plateau, so without this a stuck
 /// exploration runs all its iterations for nothing.

@@ -5,7 +5,7 @@ use std::sync::atomic::AtomicBool;
 
 use crate::lattice::{Cell, LatticeKind};
 use crate::solver::refine::{
-    all_connected, conflicts, mismatched_cells, pivot_step, refine, Motions,
+    all_connected, conflicts, mismatched_cells, pivot_step, refine_with_patience, Motions,
 };
 
 use super::util::{candidate, labelled, rng, verified, Cubic, Square, Tri4};
@@ -247,17 +247,18 @@ fn label_switching_changes_only_boundary_cells() {
     check_switching(Cubic, &["AA|AB/BB|BB", "ABBB|AABB", "AA|BA|BB|BB"]);
 }
 
-/// `refine` leaves a valid dissection valid (up to renaming the labels).
+/// `refine_with_patience` (the paper's loop: patience 0) leaves a valid dissection valid (up to renaming the labels).
 fn check_stays_valid(lattice: LatticeKind, mirror: bool, labelled: &[&str]) {
     let (figures, problem, cand) = candidate(lattice, mirror, labelled);
     assert!(verified(lattice, mirror, &figures, &cand), "start is valid");
     assert!(all_connected(&problem, &cand));
     for seed in 0..4 {
         let mut c = cand.clone();
-        refine(
+        refine_with_patience(
             &problem,
             &mut c,
             10,
+            0,
             &mut rng(seed),
             &AtomicBool::new(false),
         );
@@ -291,10 +292,11 @@ fn refine_repairs_a_small_mismatch() {
     let repaired = (0..10)
         .filter(|&seed| {
             let mut c = cand.clone();
-            refine(
+            refine_with_patience(
                 &problem,
                 &mut c,
                 10,
+                0,
                 &mut rng(seed),
                 &AtomicBool::new(false),
             );
@@ -308,7 +310,14 @@ fn refine_repairs_a_small_mismatch() {
 fn refine_stops_when_asked() {
     let (_, problem, cand) = candidate(Square, false, &["AAA|ABB", "AAA|AAB"]);
     let mut c = cand.clone();
-    refine(&problem, &mut c, 100, &mut rng(1), &AtomicBool::new(true));
+    refine_with_patience(
+        &problem,
+        &mut c,
+        100,
+        0,
+        &mut rng(1),
+        &AtomicBool::new(true),
+    );
     assert_eq!(c, cand);
 }
 
