@@ -10,7 +10,7 @@
 //! * The question "is there a dissection into at most K pieces?" as SAT
 //!   ([`placement_encoding`]), solved by batsat. Without connectivity the
 //!   encoding is a relaxation: UNSAT proves the lower bound K+1. Connectivity
-//!   is added lazily ([`connectivity_cut`]): a model whose pieces are split
+//!   is added lazily (`connectivity_cut`): a model whose pieces are split
 //!   gets clauses that forbid the split, so a model that survives is a real
 //!   K-piece dissection (and is checked by `dissect_core::verify` before it
 //!   is reported).
@@ -20,7 +20,7 @@
 //! Architecture invariant: like the core, this crate does no I/O and never
 //! prints; progress leaves through [`search::ExactObserver`]. The SAT backend
 //! (the `batsat` crate) is a dependency of this crate only, and only
-//! [`sat_backend`] names it.
+//! `sat_backend` names it.
 
 pub mod bound;
 pub(crate) mod component_count;
