@@ -108,7 +108,7 @@ impl Incompatibility {
         // Keep the graph irreflexive and within n bits.
         for (a, row) in rows.iter_mut().enumerate() {
             row[a / 64] &= !(1 << (a % 64));
-            if n % 64 != 0 {
+            if !n.is_multiple_of(64) {
                 row[words - 1] &= (1u64 << (n % 64)) - 1;
             }
         }
