@@ -30,12 +30,14 @@ pub(crate) mod instance;
 pub mod motion;
 pub mod placement_encoding;
 pub(crate) mod reachability_encoding;
+pub mod repair;
 pub(crate) mod sat_backend;
 pub mod search;
 
 pub use bound::{cheap_bound, Bound, Reason};
 pub use motion::MotionSet;
 pub use placement_encoding::EncodingSize;
+pub use repair::{repair, repair_report, RepairOptions, RepairReport};
 pub use search::{
     dimacs, search, Dimacs, ExactEvent, ExactObserver, ExactOptions, ExactOutcome, Mode,
 };
@@ -52,4 +54,8 @@ pub enum ExactError {
     /// verifier: a bug in the encoding, never the user's fault.
     #[error("internal error: a SAT model decoded into an invalid dissection: {0}")]
     InvalidModel(String),
+    /// Occurs when a candidate given to [`repair()`] does not partition the
+    /// figures into the same number of labels.
+    #[error("invalid candidate: {0}")]
+    Candidate(String),
 }

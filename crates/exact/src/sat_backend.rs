@@ -2,7 +2,7 @@
 //! only module that names the backend, so another one can replace it here
 //! alone.
 
-use batsat::{lbool, Lit, SolverInterface, SolverOpts};
+use batsat::{lbool, ClauseKind, Lit, SolverInterface, SolverOpts};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Instant;
 
@@ -12,11 +12,23 @@ struct StopCheck<'a> {
     deadline: Option<Instant>,
     /// Give up once the shared upper bound falls to this or below.
     upper: Option<(&'a AtomicUsize, usize)>,
+    /// Conflicts (learnt clauses) since the solver was made: a measure of
+    /// work that is the same on every machine.
+    conflicts: u64,
+    /// Give up once `conflicts` reaches this.
+    conflict_limit: Option<u64>,
 }
 
 impl batsat::Callbacks for StopCheck<'_> {
+    fn on_new_clause(&mut self, _c: &[Lit], kind: ClauseKind) {
+        if kind == ClauseKind::Learnt {
+            self.conflicts += 1;
+        }
+    }
+
     fn stop(&self) -> bool {
-        self.stop.load(Ordering::Relaxed)
+        self.conflict_limit.is_some_and(|l| self.conflicts >= l)
+            || self.stop.load(Ordering::Relaxed)
             || self.deadline.is_some_and(|d| Instant::now() >= d)
             || self
                 .upper
@@ -45,6 +57,8 @@ impl<'a> Sat<'a> {
                 stop,
                 deadline: None,
                 upper,
+                conflicts: 0,
+                conflict_limit: None,
             },
         );
         Sat {
@@ -104,8 +118,19 @@ impl<'a> Sat<'a> {
         (self.next_var - 1) as usize
     }
 
+    /// Conflicts met by every solve so far.
+    pub fn conflicts(&self) -> u64 {
+        self.solver.cb().conflicts
+    }
+
+    /// Makes [`Sat::solve`] give up once [`Sat::conflicts`] reaches `limit`
+    /// (`None`: no limit).
+    pub fn set_conflict_limit(&mut self, limit: Option<u64>) {
+        self.solver.cb_mut().conflict_limit = limit;
+    }
+
     /// `Some(true)`: satisfiable, `Some(false)`: unsatisfiable, `None`:
-    /// stopped or past the deadline.
+    /// stopped, past the deadline or out of conflicts.
     pub fn solve(&mut self, deadline: Option<Instant>) -> Option<bool> {
         self.solver.cb_mut().deadline = deadline;
         let answer = self.solver.solve_limited(&[]);
