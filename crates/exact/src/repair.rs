@@ -263,11 +263,11 @@ impl<'a> Candidate<'a> {
         let mut best = vec![vec![None; k]];
         for f in 1..shapes.len() {
             let mut per_piece = Vec::with_capacity(k);
-            for i in 0..k {
+            for (from, to) in members[0].iter().zip(&members[f]) {
                 if interrupted() {
                     return None;
                 }
-                let t = best_motion(inst, &members[0][i], f, &members[f][i]);
+                let t = best_motion(inst, from, f, to);
                 per_piece.push(t.map(|t| (t, t.inverse())));
             }
             best.push(per_piece);
@@ -369,9 +369,9 @@ impl<'a> Candidate<'a> {
         }
         for a in 0..shapes[0].len() {
             if free[0][a] {
-                for f in 1..shapes.len() {
+                for (f, fr) in free.iter_mut().enumerate().skip(1) {
                     if let Some(b) = self.image(a, f) {
-                        free[f][b] = true;
+                        fr[b] = true;
                     }
                 }
             }
@@ -595,8 +595,8 @@ impl<'c, 'a> Round<'c, 'a> {
             unsat: false,
         };
         // Exactly one piece per free cell.
-        for f in 0..shapes.len() {
-            for c in 0..shapes[f].len() {
+        for (f, s) in shapes.iter().enumerate() {
+            for c in 0..s.len() {
                 if !round.free[f][c] {
                     continue;
                 }
@@ -646,12 +646,12 @@ impl<'c, 'a> Round<'c, 'a> {
             }
         }
         for f in 1..shapes.len() {
-            for i in 0..k {
+            for (i, e) in empty.iter().enumerate() {
                 if interrupted() {
                     return None;
                 }
                 let motions = round.motions(i, f, options.max_motions);
-                let mut at_least: Vec<Lit> = empty[i].map(Lit::Var).into_iter().collect();
+                let mut at_least: Vec<Lit> = e.map(Lit::Var).into_iter().collect();
                 for (t, u) in motions {
                     let m = sat.var();
                     at_least.push(Lit::Var(m));
