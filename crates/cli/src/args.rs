@@ -27,12 +27,16 @@ pub enum Command {
     /// Prove a lower bound on the number of pieces (last line: "lower bound: K (reason)").
     Bound(crate::prove::BoundArgs),
     /// Serve the browser studio (figure editor, solver, downloads) on 127.0.0.1.
+    #[cfg(feature = "serve")]
     Serve(crate::serve::ServeArgs),
     /// Draw a solution (svg, png), or make it (stl meshes, ldraw LEGO models, --cut-sheet).
+    #[cfg(feature = "render")]
     Render(crate::render::RenderArgs),
     /// Turn a picture (PNG, JPEG, SVG; slices for cubic) into a figure with an exact cell count.
+    #[cfg(feature = "render")]
     Rasterize(crate::render::RasterizeArgs),
     /// Turn a closed STL mesh into a cubic figure with an exact cube count.
+    #[cfg(feature = "render")]
     Voxelize(crate::render::VoxelizeArgs),
 }
 
@@ -111,6 +115,7 @@ pub struct SolveArgs {
     #[arg(short = 'o', long = "output", value_name = "OUT.json")]
     pub output: Option<PathBuf>,
     /// Also write SVG views (dissection.svg, cut-sheet.svg) into this directory.
+    #[cfg(feature = "render")]
     #[arg(long, value_name = "DIR")]
     pub render: Option<PathBuf>,
     /// Print nothing but errors.

@@ -5,7 +5,9 @@ mod info;
 mod input;
 mod progress;
 mod prove;
+#[cfg(feature = "render")]
 mod render;
+#[cfg(feature = "serve")]
 mod serve;
 mod solve;
 mod verify;
@@ -39,9 +41,13 @@ fn main() -> ExitCode {
         args::Command::Verify(a) => verify::run(a),
         args::Command::Info(a) => info::run(a),
         args::Command::Bound(a) => prove::bound(a),
+        #[cfg(feature = "serve")]
         args::Command::Serve(a) => serve::run(a),
+        #[cfg(feature = "render")]
         args::Command::Render(a) => render::run(a),
+        #[cfg(feature = "render")]
         args::Command::Rasterize(a) => render::rasterize(a),
+        #[cfg(feature = "render")]
         args::Command::Voxelize(a) => render::voxelize(a),
     };
     match result {

@@ -195,6 +195,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     }
     written?;
 
+    #[cfg(feature = "render")]
     if let Some(dir) = &args.render {
         crate::render::write_views(dir, &dissection)?;
     }
