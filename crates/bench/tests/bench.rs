@@ -240,6 +240,7 @@ fn a_scaled_dissection_keeps_its_piece_count() {
         options: quick(),
         time_limit_2d: Some(Duration::from_secs(60)),
         time_limit_3d: None,
+        mode: Default::default(),
     };
     let mut seen = 0;
     let steps = plan
@@ -338,10 +339,13 @@ fn seed_run(seed: u64, pieces: Option<usize>, first: Option<u64>, total: u64) ->
         seed,
         pieces,
         first_valid: first.map(Duration::from_millis),
+        time_to_best: first.map(|f| Duration::from_millis(f * 2)),
         total: Duration::from_millis(total),
         cpu: Some(Duration::from_millis(total * 3 / 2)),
         variance: pieces.map(|p| p as f64 * 1.5),
         stopped: pieces.is_none(),
+        lower_bound: Some(2),
+        optimal: pieces == Some(2),
         explorations: 400 * seed as usize,
         last_level: (
             pieces.unwrap_or(6),
