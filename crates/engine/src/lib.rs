@@ -17,6 +17,7 @@
 //! prints.
 
 mod options;
+mod repair;
 mod report;
 mod run;
 mod verified;

@@ -11,6 +11,7 @@ use dissect_core::solver::{
 use dissect_core::Figure;
 use dissect_exact::{
     search, Bound, ExactError, ExactEvent, ExactObserver, ExactOptions, ExactOutcome, Mode, Reason,
+    RepairOptions,
 };
 
 use crate::options::{RunOptions, Strategy};
@@ -21,6 +22,9 @@ use crate::verified::Verified;
 /// this many cells: its encoding grows with cells × placements, and larger
 /// figures would spend memory and a core on a formula it cannot solve.
 pub const PROVE_MAX_CELLS: usize = 600;
+
+/// SAT conflicts one repair of a near miss may spend (deterministic work).
+pub const REPAIR_BUDGET: u64 = 4_000;
 
 /// Live news of a run.
 #[derive(Debug)]
@@ -229,7 +233,16 @@ pub fn run(
         max_pieces: config.max_pieces,
         ..ExactOptions::default()
     };
-    let repairer: Option<&dyn Repair> = None;
+    let exact_repair = crate::repair::ExactRepair {
+        figures,
+        options: RepairOptions {
+            mirror,
+            deadline,
+            budget: REPAIR_BUDGET,
+            ..RepairOptions::default()
+        },
+    };
+    let repairer: Option<&dyn Repair> = config.repair.then_some(&exact_repair as &dyn Repair);
 
     if deadline.is_some_and(|d| Instant::now() >= d) {
         // No time at all: stop before anything starts.

@@ -12,7 +12,7 @@ use dissect_core::solver::Event;
 use dissect_core::{Figure, LatticeKind};
 use dissect_engine::{EngineEvent, EngineObserver, Report, RunOptions};
 use serde::Serialize;
-use serde_json::{json, Map, Value};
+use serde_json::{json, Value};
 use tokio::sync::{watch, OwnedSemaphorePermit, Semaphore};
 
 use crate::error::ApiError;

@@ -440,7 +440,12 @@ impl<'a> Search<'a> {
     fn level(&self, round: usize, level: usize, from: From<'_>) -> Level {
         let options = self.options;
         let pieces = level + 1;
-        let n = options.explorations.max(1);
+        // The descent is a local step from a dissection: a quarter of a
+        // level's explorations, no extra rounds.
+        let (n, extra_rounds) = match from {
+            From::Below(_) => (options.explorations.max(1), options.extra_rounds),
+            From::Above(_) => (options.explorations.div_ceil(4).max(1), 0),
+        };
         self.observer.on_event(&Event::LevelStarted {
             level,
             pieces,
@@ -510,7 +515,7 @@ impl<'a> Search<'a> {
                 .min()
                 .unwrap_or(u64::MAX);
             if start == planned
-                && planned < n.saturating_mul(1 + options.extra_rounds)
+                && planned < n.saturating_mul(1 + extra_rounds)
                 && best_mismatch <= near_miss
             {
                 planned += n;
