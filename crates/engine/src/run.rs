@@ -2,7 +2,8 @@
 //! the stop flag, and the report.
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::sync::Mutex;
+use std::sync::mpsc::{channel, Sender};
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use dissect_core::solver::{
@@ -22,6 +23,9 @@ use crate::verified::Verified;
 /// this many cells: its encoding grows with cells × placements, and larger
 /// figures would spend memory and a core on a formula it cannot solve.
 pub const PROVE_MAX_CELLS: usize = 600;
+
+/// How long a stopped run waits for the exact side to return.
+const EXACT_GRACE: Duration = Duration::from_millis(300);
 
 /// SAT conflicts one repair of a near miss may spend (deterministic work).
 pub const REPAIR_BUDGET: u64 = 4_000;
@@ -75,7 +79,7 @@ struct Shared<'a> {
     heuristic_best: AtomicUsize,
     sat_best: AtomicUsize,
     /// The best piece count known to either side, for the exact search.
-    upper: AtomicUsize,
+    upper: Arc<AtomicUsize>,
     lower: Mutex<LowerBound>,
     lower_value: AtomicUsize,
     history: Mutex<Vec<Improvement>>,
@@ -155,6 +159,21 @@ impl Observer for Shared<'_> {
     }
 }
 
+/// The exact search's events, sent to the thread that owns the run (the
+/// exact search runs on a thread of its own that a stop does not wait for:
+/// parts of it, such as the cheap bound, do not look at the stop flag).
+struct Forward(Mutex<Sender<ExactEvent>>);
+
+impl ExactObserver for Forward {
+    fn on_event(&self, event: &ExactEvent) {
+        let _ = self
+            .0
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .send(event.clone());
+    }
+}
+
 impl ExactObserver for Shared<'_> {
     fn on_event(&self, event: &ExactEvent) {
         match event {
@@ -204,7 +223,7 @@ pub fn run(
         observer,
         heuristic_best: AtomicUsize::new(usize::MAX),
         sat_best: AtomicUsize::new(usize::MAX),
-        upper: AtomicUsize::new(usize::MAX),
+        upper: Arc::new(AtomicUsize::new(usize::MAX)),
         lower: Mutex::new(LowerBound {
             value: 1,
             reason: "every dissection has a piece".to_string(),
@@ -218,9 +237,8 @@ pub fn run(
     let exact_on =
         strategy == Strategy::Exact || (config.prove && figures[0].len() <= PROVE_MAX_CELLS);
     let heuristic_stop = AtomicBool::new(false);
-    let exact_stop = AtomicBool::new(false);
+    let exact_stop = Arc::new(AtomicBool::new(false));
     let heuristic_done = AtomicBool::new(!heuristic_on);
-    let exact_done = AtomicBool::new(!exact_on);
     let solver_options = options.solver_options();
     let anytime = options.anytime();
     let exact_options = ExactOptions {
@@ -249,8 +267,25 @@ pub fn run(
         heuristic_stop.store(true, Ordering::SeqCst);
         exact_stop.store(true, Ordering::SeqCst);
     }
+    // The exact side: on a thread of its own, with its own copies, its
+    // events forwarded to this thread.
+    let (events_tx, events) = channel::<ExactEvent>();
+    let exact = exact_on.then(|| {
+        let figures = figures.to_vec();
+        let stop = Arc::clone(&exact_stop);
+        let upper = Arc::clone(&shared.upper);
+        let forward = Forward(Mutex::new(events_tx));
+        let options = exact_options.clone();
+        std::thread::spawn(move || search(&figures, &options, &stop, &upper, &forward))
+    });
+    let exact_done = || exact.as_ref().is_none_or(|t| t.is_finished());
+    let drain = || {
+        while let Ok(e) = events.try_recv() {
+            ExactObserver::on_event(&shared, &e);
+        }
+    };
     let mut end = End::Finished;
-    let (heuristic, exact) = std::thread::scope(|s| {
+    let heuristic = std::thread::scope(|s| {
         let heuristic = heuristic_on.then(|| {
             s.spawn(|| {
                 let r = match strategy {
@@ -268,14 +303,8 @@ pub fn run(
                 r
             })
         });
-        let exact = exact_on.then(|| {
-            s.spawn(|| {
-                let r = search(figures, &exact_options, &exact_stop, &shared.upper, &shared);
-                exact_done.store(true, Ordering::SeqCst);
-                r
-            })
-        });
         loop {
+            drain();
             if stop.load(Ordering::SeqCst) {
                 end = End::Interrupted;
                 break;
@@ -302,7 +331,7 @@ pub fn run(
                 break;
             }
             let h_done = heuristic_done.load(Ordering::SeqCst);
-            let x_done = exact_done.load(Ordering::SeqCst);
+            let x_done = exact_done();
             let ended = if heuristic_on {
                 // Without a time limit the heuristic's end is the run's end.
                 h_done && (x_done || deadline.is_none())
@@ -316,13 +345,20 @@ pub fn run(
         }
         heuristic_stop.store(true, Ordering::SeqCst);
         exact_stop.store(true, Ordering::SeqCst);
-        (
-            heuristic.map(|t| t.join().expect("heuristic thread")),
-            exact.map(|t| t.join().expect("exact thread")),
-        )
+        heuristic.map(|t| t.join().expect("heuristic thread"))
     });
+    // The exact side gets a moment to see its stop flag; past that it is
+    // left to end on its own (what it would have said is not waited for).
+    let grace = Instant::now() + EXACT_GRACE;
+    while !exact_done() && Instant::now() < grace {
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    let exact: Option<ExactOutcome> = match exact {
+        Some(t) if t.is_finished() => Some(t.join().expect("exact thread")?),
+        _ => None,
+    };
+    drain();
     let heuristic: Option<Outcome> = heuristic.transpose()?;
-    let exact: Option<ExactOutcome> = exact.transpose()?;
 
     let mut best: Option<(Verified, Source, Option<usize>)> = None;
     if let Some(found) = heuristic.as_ref().and_then(|o| o.found.as_ref()) {
