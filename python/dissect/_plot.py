@@ -57,7 +57,7 @@ def cell_polygon(lattice: str, cell: tuple) -> List[Point]:
 
 def _layout(d) -> List[Tuple[int, int, List[Point], int]]:
     """(figure, piece, polygon, layer) for every cell, each figure moved to
-    its place in the picture."""
+    its place in the picture (layer: z on cubic, else 0)."""
     out = []
     offset = 0.0
     for f, pieces in enumerate(d.pieces):
@@ -70,7 +70,8 @@ def _layout(d) -> List[Tuple[int, int, List[Point], int]]:
         z0 = min(c[2] for _, c in cells) if d.lattice == "cubic" else 0
         for i, poly, c in polys:
             dy = (c[2] - z0) * (height + 1) if d.lattice == "cubic" else 0.0
-            out.append((f, i, [(px - x0 + offset, py - y0 + dy) for px, py in poly], 0))
+            layer = c[2] - z0 if d.lattice == "cubic" else 0
+            out.append((f, i, [(px - x0 + offset, py - y0 + dy) for px, py in poly], layer))
         offset += max(xs) - x0 + 1.5
     return out
 
@@ -106,12 +107,12 @@ def plot(d, ax=None, edgecolor="black", linewidth=1.5, labels=True):
     ax.add_collection(LineCollection(_outline(cells), colors=edgecolor, linewidths=linewidth))
     if labels:
         sums: Dict = {}
-        for f, i, poly, _ in cells:
-            s = sums.setdefault((f, i), [0.0, 0.0, 0])
+        for f, i, poly, layer in cells:
+            s = sums.setdefault((f, i, layer), [0.0, 0.0, 0])
             s[0] += sum(p[0] for p in poly) / len(poly)
             s[1] += sum(p[1] for p in poly) / len(poly)
             s[2] += 1
-        for (_, i), (sx, sy, n) in sums.items():
+        for (_, i, _), (sx, sy, n) in sums.items():
             ax.text(sx / n, sy / n, _letter(i), ha="center", va="center", fontsize=8)
     ax.set_aspect("equal")
     ax.autoscale_view()
