@@ -142,7 +142,11 @@ impl PyFigure {
             (Some(l), _) => self::lattice(py, l)?,
             (None, 2) => LatticeKind::Square,
             (None, 3) => LatticeKind::Cubic,
-            (None, n) => return Err(bad(format!("expected a 2D or 3D array, got {n} dimensions"))),
+            (None, n) => {
+                return Err(bad(format!(
+                    "expected a 2D or 3D array, got {n} dimensions"
+                )))
+            }
         };
         let want = match kind {
             LatticeKind::Cubic | LatticeKind::Tri4 => 3,

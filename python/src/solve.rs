@@ -45,7 +45,11 @@ pub(crate) fn problem(
     let names: Vec<String> = figures
         .iter()
         .enumerate()
-        .map(|(i, f)| f.name.clone().unwrap_or_else(|| format!("figure-{}", i + 1)))
+        .map(|(i, f)| {
+            f.name
+                .clone()
+                .unwrap_or_else(|| format!("figure-{}", i + 1))
+        })
         .collect();
     let figs: Vec<Figure> = figures.iter().map(|f| f.figure.clone()).collect();
     if figs.len() < 2 {
@@ -159,33 +163,20 @@ pub(crate) fn options(
     Ok(o)
 }
 
-/// Notes the end of every level (the run's history).
+/// Notes the end of every level (the run's history), with its time.
 struct History {
     start: Instant,
-    levels: Mutex<Vec<(f64, usize, usize, usize, u64, bool)>>,
+    levels: Mutex<Vec<(f64, Event)>>,
 }
 
 impl Observer for History {
     fn on_event(&self, event: &Event) {
-        if let Event::LevelFinished {
-            level,
-            pieces,
-            explorations,
-            best_mismatch,
-            found,
-        } = event
-        {
+        if matches!(event, Event::LevelFinished { .. }) {
+            let t = self.start.elapsed().as_secs_f64();
             self.levels
                 .lock()
                 .unwrap_or_else(|e| e.into_inner())
-                .push((
-                    self.start.elapsed().as_secs_f64(),
-                    *level,
-                    *pieces,
-                    *explorations,
-                    *best_mismatch,
-                    *found,
-                ));
+                .push((t, event.clone()));
         }
     }
 }
@@ -279,7 +270,17 @@ pub(crate) fn solve<'py>(
         .into_inner()
         .unwrap_or_else(|e| e.into_inner());
     let rows = PyList::empty(py);
-    for (t, level, pieces, explorations, mismatch, found) in levels {
+    for (t, event) in levels {
+        let Event::LevelFinished {
+            level,
+            pieces,
+            explorations,
+            best_mismatch: mismatch,
+            found,
+        } = event
+        else {
+            continue;
+        };
         let row = PyDict::new(py);
         row.set_item("seconds", t)?;
         row.set_item("level", level)?;
