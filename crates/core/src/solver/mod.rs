@@ -8,6 +8,7 @@
 //! of threads (unless the run is stopped early).
 
 pub(crate) mod candidate;
+mod explore;
 pub(crate) mod flood_fill;
 pub(crate) mod levels;
 pub(crate) mod refine;
@@ -25,6 +26,8 @@ use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind};
 use candidate::{Candidate, Problem, Score};
 use shape::Shape;
+
+pub use explore::{Batch, Executor, Exploration, ExplorationError, Explorer};
 
 /// The most worker threads a search may ask for.
 pub const MAX_THREADS: usize = 1024;
@@ -206,6 +209,10 @@ pub enum SolveError {
     /// Occurs when the thread pool cannot be built.
     #[error("cannot start worker threads: {0}")]
     Threads(String),
+    /// Occurs when an [`Executor`] fails or returns explorations that do
+    /// not fit the problem.
+    #[error(transparent)]
+    Executor(#[from] ExplorationError),
 }
 
 /// Checks that figures can be dissected together.
@@ -240,6 +247,21 @@ fn stream(seed: u64, level: usize, index: usize) -> ChaCha8Rng {
     ))
 }
 
+/// The solver form of `figures` under `options`.
+fn problem_of(figures: &[Figure], options: &Options) -> Result<Problem, SolveError> {
+    check_figures(figures)?;
+    let lattice = figures[0].lattice().lattice();
+    let mirror = options.mirror && lattice.supports_mirror();
+    Ok(Problem::new(
+        figures.iter().map(Shape::of_figure).collect(),
+        Geometry {
+            syms: lattice.symmetries(mirror),
+            dim: lattice.dim(),
+            modulus: lattice.modulus(),
+        },
+    ))
+}
+
 /// Finds a dissection of `figures` into as few connected pieces as it can.
 ///
 /// Raising `stop` ends the search soon after; the best valid dissection found
@@ -250,17 +272,20 @@ pub fn solve(
     stop: &AtomicBool,
     observer: &dyn Observer,
 ) -> Result<Outcome, SolveError> {
-    check_figures(figures)?;
-    let lattice = figures[0].lattice().lattice();
-    let mirror = options.mirror && lattice.supports_mirror();
-    let problem = Problem::new(
-        figures.iter().map(Shape::of_figure).collect(),
-        Geometry {
-            syms: lattice.symmetries(mirror),
-            dim: lattice.dim(),
-            modulus: lattice.modulus(),
-        },
-    );
+    solve_with(figures, options, stop, observer, None)
+}
+
+/// [`solve`], with the explorations run by `executor` (`None`: the
+/// solver's thread pool). An executor that returns what
+/// [`Explorer::explore`] returns gives the same answer as [`solve`].
+pub fn solve_with(
+    figures: &[Figure],
+    options: &Options,
+    stop: &AtomicBool,
+    observer: &dyn Observer,
+    executor: Option<&dyn Executor>,
+) -> Result<Outcome, SolveError> {
+    let problem = problem_of(figures, options)?;
     if options.threads > MAX_THREADS {
         return Err(SolveError::Threads(format!(
             "{} threads asked for; at most {MAX_THREADS}",
@@ -333,15 +358,7 @@ pub fn solve(
         let done = AtomicUsize::new(0);
         let total = AtomicUsize::new(n);
         let best_seen = Mutex::new((f64::INFINITY, u64::MAX));
-        let run_one = |i: usize| -> (Candidate, Score) {
-            let mut rng = stream(options.seed, level, i);
-            let result = if level == 1 {
-                levels::level_one(&problem, options, &mut rng, stop)
-            } else {
-                use rand::RngExt;
-                let parent = &best[rng.random_range(0..best.len())].0;
-                levels::grow(&problem, parent, level, options, &mut rng, stop)
-            };
+        let note = |result: &(Candidate, Score)| {
             let d = done.fetch_add(1, Ordering::Relaxed) + 1;
             let (bs, bm) = {
                 let mut g = best_seen.lock().expect("progress lock");
@@ -356,7 +373,31 @@ pub fn solve(
                 best_score: bs,
                 best_mismatch: bm,
             });
+        };
+        let run_one = |i: usize| -> (Candidate, Score) {
+            let result = explore::explore_one(
+                &problem,
+                options,
+                0,
+                level,
+                i,
+                best.len(),
+                |p| &best[p].0,
+                stop,
+            );
+            note(&result);
             result
+        };
+        // What a foreign executor gets as parents (made once per level).
+        let parents: Vec<Exploration> = match executor {
+            Some(_) => best
+                .iter()
+                .map(|(candidate, score)| Exploration {
+                    candidate: candidate.clone(),
+                    score: *score,
+                })
+                .collect(),
+            None => Vec::new(),
         };
         let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(n);
         let batch = options.batch.max(1);
@@ -365,8 +406,33 @@ pub fn solve(
         let mut planned = n;
         while start < planned {
             let end = (start + batch).min(planned);
-            let chunk: Vec<(Candidate, Score)> =
-                pool.install(|| (start..end).into_par_iter().map(run_one).collect());
+            let chunk: Vec<(Candidate, Score)> = match executor {
+                None => pool.install(|| (start..end).into_par_iter().map(run_one).collect()),
+                Some(ex) => {
+                    let batch = Batch {
+                        round: 0,
+                        level,
+                        indices: start..end,
+                        parents: &parents,
+                    };
+                    let got = ex.run(&batch).map_err(ExplorationError::Executor)?;
+                    if got.len() != end - start {
+                        return Err(ExplorationError::Count {
+                            got: got.len(),
+                            want: end - start,
+                        }
+                        .into());
+                    }
+                    let mut chunk = Vec::with_capacity(got.len());
+                    for e in got {
+                        e.check(&problem)?;
+                        let result = (e.candidate, e.score);
+                        note(&result);
+                        chunk.push(result);
+                    }
+                    chunk
+                }
+            };
             results.extend(chunk);
             start = end;
             if stop.load(Ordering::Relaxed) {

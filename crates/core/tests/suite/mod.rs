@@ -1,6 +1,7 @@
 //! The topics of the integration suite.
 
 mod ascii_art;
+mod explore;
 mod lattice;
 mod parse;
 mod solution_json;
