@@ -22,6 +22,8 @@ from dissect import Dissection, Figure
 
 __all__ = ["solve_many", "solve"]
 
+from dissect import _dissect
+
 Problem = Union[Sequence[Figure], Dict[str, Any]]
 
 
@@ -76,3 +78,87 @@ def solve_many(
                 raise cause from None
             out.append(cause)
     return out
+
+
+# One Explorer per problem per worker process: building it (shapes, layout,
+# moved point sets) costs more than an exploration of a small figure.
+_explorers: Dict[bytes, Any] = {}
+
+
+@ray.remote
+def _explore_task(key: bytes, problem, round_: int, level: int, indices: List[int], parents: List[bytes]):
+    explorer = _explorers.get(key)
+    if explorer is None:
+        figures, seed, options = problem
+        explorer = _dissect.Explorer(figures, seed=seed, **options)
+        _explorers.clear()
+        _explorers[key] = explorer
+    return explorer.explore(round_, level, indices, parents)
+
+
+class _RayExecutor:
+    """Sends each batch of explorations to Ray as ``tasks`` tasks of
+    consecutive indices and returns their results in index order."""
+
+    def __init__(self, figures, seed, options, tasks):
+        import hashlib
+        import pickle
+
+        problem = (figures, seed, options)
+        self.key = hashlib.sha256(pickle.dumps(problem)).digest()
+        self.problem = ray.put(problem)
+        self.tasks = tasks
+        self._parents = (None, None)
+        self.batches = 0
+
+    def __call__(self, round_, level, start, end, parents):
+        # The parents are the same for every batch of a level: put them once.
+        if self._parents[0] != (round_, level):
+            self._parents = ((round_, level), ray.put(parents))
+        parents_ref = self._parents[1]
+        indices = list(range(start, end))
+        n = max(1, min(self.tasks, len(indices)))
+        chunks = [indices[i * len(indices) // n:(i + 1) * len(indices) // n] for i in range(n)]
+        refs = [
+            _explore_task.remote(self.key, self.problem, round_, level, c, parents_ref)
+            for c in chunks
+        ]
+        self.batches += 1
+        out: List[bytes] = []
+        for part in ray.get(refs):
+            out.extend(part)
+        return out
+
+
+def solve(
+    figures: Sequence[Figure],
+    seed: int = 1,
+    time_limit: Optional[float] = None,
+    tasks: Optional[int] = None,
+    **options: Any,
+) -> Dissection:
+    """``dissect.solve`` with the search's explorations spread over the Ray
+    cluster: every batch of explorations is cut into ``tasks`` Ray tasks
+    (default: the cluster's CPU count) of consecutive explorations. The
+    level loop runs here and gets the results back in index order, so the
+    answer is the same as ``dissect.solve``'s for the same seed and options
+    when no time limit (or Ctrl-C) stops the search. Worth it when
+    explorations are expensive (large figures, many explorations, many
+    machines); on small figures Ray's per-batch overhead dominates (see
+    BENCHMARKS.md).
+    """
+    figures = dissect._figures(figures)
+    if tasks is None:
+        tasks = max(1, int(ray.cluster_resources().get("CPU", 1)))
+    if tasks < 1:
+        raise dissect.OptionError(f"tasks must be at least 1, got {tasks}")
+    options.pop("threads", None)  # the workers run one exploration at a time
+    # Checks the options here, with the problem, before anything is sent.
+    _dissect.Explorer(figures, seed=seed, **options)
+    executor = _RayExecutor(figures, seed, options, tasks)
+    result = _dissect.solve(
+        figures, seed=seed, time_limit=time_limit, threads=1, executor=executor, **options
+    )
+    result["ray_tasks"] = tasks
+    result["ray_batches"] = executor.batches
+    return Dissection(figures, result)

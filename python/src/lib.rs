@@ -18,6 +18,7 @@ mod solve;
 #[pymodule]
 fn _dissect(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<figure::PyFigure>()?;
+    m.add_class::<solve::PyExplorer>()?;
     m.add_function(wrap_pyfunction!(solve::solve, m)?)?;
     m.add_function(wrap_pyfunction!(solve::bound, m)?)?;
     m.add_function(wrap_pyfunction!(solve::verify, m)?)?;

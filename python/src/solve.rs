@@ -5,11 +5,11 @@ use std::sync::Mutex;
 use std::time::Instant;
 
 use dissect_core::io::{parse_solution, Dissection};
-use dissect_core::solver::{self, Event, Observer, Options};
+use dissect_core::solver::{self, Batch, Event, Executor, Exploration, Observer, Options};
 use dissect_core::{Figure, LatticeKind};
 use dissect_exact::{ExactOptions, Mode};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyBytes, PyDict, PyList};
 
 use crate::errors::{error, Kind};
 use crate::figure::{cells_to_py, PyFigure};
@@ -181,16 +181,117 @@ impl Observer for History {
     }
 }
 
+/// Runs batches of explorations through a Python callable
+/// `executor(round, level, start, end, parents) -> list[bytes]` (parents and
+/// results as `Exploration` bytes): how `dissect.ray` spreads a search.
+struct PyExecutor {
+    call: Py<PyAny>,
+    /// The callable's exception, raised again when the search has ended.
+    error: Mutex<Option<PyErr>>,
+}
+
+impl Executor for PyExecutor {
+    fn run(&self, batch: &Batch<'_>) -> Result<Vec<Exploration>, String> {
+        Python::attach(|py| {
+            let parents: Vec<Bound<'_, PyBytes>> = batch
+                .parents
+                .iter()
+                .map(|p| PyBytes::new(py, &p.to_bytes()))
+                .collect();
+            let args = (
+                batch.round,
+                batch.level,
+                batch.indices.start,
+                batch.indices.end,
+                parents,
+            );
+            let got = self
+                .call
+                .call1(py, args)
+                .and_then(|r| r.extract::<Vec<Vec<u8>>>(py).map_err(PyErr::from));
+            match got {
+                Ok(list) => list
+                    .iter()
+                    .map(|b| Exploration::from_bytes(b).map_err(|e| e.to_string()))
+                    .collect(),
+                Err(e) => {
+                    let message = e.to_string();
+                    *self.error.lock().unwrap_or_else(|p| p.into_inner()) = Some(e);
+                    Err(message)
+                }
+            }
+        })
+    }
+}
+
+/// Runs single explorations of one problem: the worker half of
+/// `dissect.ray.solve` (`Explorer(figures, seed, **options).explore(...)`).
+#[pyclass(module = "dissect._dissect", name = "Explorer", frozen)]
+pub(crate) struct PyExplorer {
+    explorer: solver::Explorer,
+}
+
+#[pymethods]
+impl PyExplorer {
+    #[new]
+    #[pyo3(signature = (figures, seed = 1, threads = 0, **options))]
+    fn new(
+        py: Python<'_>,
+        figures: Vec<PyRef<'_, PyFigure>>,
+        seed: u64,
+        threads: usize,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PyExplorer> {
+        let (figs, _) = problem(py, &figures)?;
+        let opts = self::options(py, figs[0].lattice(), seed, threads, options)?;
+        let explorer = solver::Explorer::new(&figs, &opts)
+            .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+        Ok(PyExplorer { explorer })
+    }
+
+    /// The explorations `indices` of `level` in `round` from `parents`
+    /// (bytes), as bytes, in order; without the GIL.
+    fn explore<'py>(
+        &self,
+        py: Python<'py>,
+        round: usize,
+        level: usize,
+        indices: Vec<usize>,
+        parents: Vec<Vec<u8>>,
+    ) -> PyResult<Vec<Bound<'py, PyBytes>>> {
+        let parents = parents
+            .iter()
+            .map(|b| Exploration::from_bytes(b))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+        let stop = AtomicBool::new(false);
+        let out = py.detach(|| {
+            indices
+                .iter()
+                .map(|&i| {
+                    self.explorer
+                        .explore(round, level, i, &parents, &stop)
+                        .map(|e| e.to_bytes())
+                })
+                .collect::<Result<Vec<_>, _>>()
+        });
+        let out = out.map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+        Ok(out.iter().map(|b| PyBytes::new(py, b)).collect())
+    }
+}
+
 /// Finds a dissection (see `dissect.solve`); returns a dict the Python half
-/// turns into a `Dissection`.
+/// turns into a `Dissection`. With `executor` (see [`PyExecutor`]) the
+/// explorations run wherever it sends them.
 #[pyfunction]
-#[pyo3(signature = (figures, seed = 1, time_limit = None, threads = 0, **options))]
+#[pyo3(signature = (figures, seed = 1, time_limit = None, threads = 0, executor = None, **options))]
 pub(crate) fn solve<'py>(
     py: Python<'py>,
     figures: Vec<PyRef<'py, PyFigure>>,
     seed: u64,
     time_limit: Option<f64>,
     threads: usize,
+    executor: Option<Py<PyAny>>,
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (figs, names) = problem(py, &figures)?;
@@ -202,9 +303,18 @@ pub(crate) fn solve<'py>(
         start: Instant::now(),
         levels: Mutex::new(Vec::new()),
     };
+    let executor = executor.map(|call| PyExecutor {
+        call,
+        error: Mutex::new(None),
+    });
     let run = watched(py, &stop, deadline, || {
-        solver::solve(&figs, &opts, &stop, &history)
+        let ex = executor.as_ref().map(|e| e as &dyn Executor);
+        solver::solve_with(&figs, &opts, &stop, &history, ex)
     })?;
+    if let Some(e) = executor.and_then(|e| e.error.into_inner().unwrap_or_else(|p| p.into_inner()))
+    {
+        return Err(e);
+    }
     let seconds = history.start.elapsed().as_secs_f64();
     let outcome = run
         .value

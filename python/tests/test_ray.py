@@ -53,3 +53,39 @@ def test_solve_many_failures(cluster):
         dray.solve_many([figures], max_pieces=2, explorations=10)
     with pytest.raises(dissect.ProblemError):
         dray.solve_many([[figures[0]]])
+
+
+@pytest.mark.parametrize(
+    "name, lattice, options",
+    [
+        ("squares-3-4-split-to-5", "square", {"seed": 1}),
+        ("squares-3-4-split-to-5", "square", {"seed": 2, "explorations": 60, "patience": 5}),
+        ("tri-triangle8-to-rect4x8", "tri4", {"seed": 1}),
+        ("cube4-cavity-to-7x4x2", "cubic", {"seed": 3, "explorations": 100}),
+    ],
+)
+def test_distributed_search_gives_the_local_answer(cluster, name, lattice, options, tmp_path):
+    import dissect.ray as dray
+
+    from conftest import check_with_verify_py
+
+    figures, files = instance(name, lattice)
+    local = dissect.solve(figures, **options)
+    spread = dray.solve(figures, tasks=2, **options)
+    assert spread.pieces == local.pieces
+    assert spread.history and [
+        (h["level"], h["explorations"], h["best_mismatch"]) for h in spread.history
+    ] == [(h["level"], h["explorations"], h["best_mismatch"]) for h in local.history]
+    check_with_verify_py(spread, files, tmp_path)
+
+
+def test_distributed_search_errors(cluster):
+    import dissect.ray as dray
+
+    figures = instance("squares-3-4-split-to-5", "square")[0]
+    with pytest.raises(dissect.OptionError):
+        dray.solve(figures, explorashuns=4)
+    with pytest.raises(dissect.OptionError):
+        dray.solve(figures, tasks=0)
+    with pytest.raises(dissect.NoDissectionFound):
+        dray.solve(figures, max_pieces=2, explorations=8)
