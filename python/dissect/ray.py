@@ -159,6 +159,7 @@ def solve(
     result = _dissect.solve(
         figures, seed=seed, time_limit=time_limit, threads=1, executor=executor, **options
     )
-    result["ray_tasks"] = tasks
-    result["ray_batches"] = executor.batches
-    return Dissection(figures, result)
+    d = Dissection(figures, result)
+    d.ray_tasks = tasks  #: Ray tasks per batch
+    d.ray_batches = executor.batches  #: batches sent to Ray
+    return d
