@@ -15,7 +15,12 @@ from __future__ import annotations
 
 from typing import Any, Dict, List, Optional, Sequence, Union
 
-import ray
+try:
+    import ray
+except ImportError as e:  # pragma: no cover - depends on the environment
+    raise ImportError(
+        "dissect.ray needs Ray: pip install './python[ray]' (or pip install ray)"
+    ) from e
 
 import dissect
 from dissect import Dissection, Figure
