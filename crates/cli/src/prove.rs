@@ -181,6 +181,13 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
             "a {}-piece dissection exists (found by SAT): the bound is optimal",
             p[0].len()
         );
+    } else if let Some(dissect_exact::Limit::TooLarge { pieces, bytes }) = &outcome.limit {
+        println!(
+            "stopped: the SAT encoding for {pieces} pieces would need about {} MiB \
+             (over the cap of {} MiB); the bound below is the best proved",
+            bytes >> 20,
+            options.max_encoding_bytes >> 20
+        );
     } else if outcome.stopped {
         println!("stopped (time limit or Ctrl-C); the bound below is the best proved");
     }
