@@ -57,7 +57,7 @@ impl Incompatibility {
                 let images: Vec<Point> = s.points.iter().map(|p| g.apply(*p)).collect();
                 let mut shifts: HashSet<Point> = HashSet::new();
                 for (c, gp) in images.iter().enumerate() {
-                    if c % 256 == 0 && interrupted() {
+                    if c.is_multiple_of(256) && interrupted() {
                         return None;
                     }
                     for q in &target.points {
@@ -162,7 +162,7 @@ impl Incompatibility {
         let w = m.div_ceil(64);
         let mut adj = vec![vec![0u64; w]; m];
         for (i, &u) in order.iter().enumerate() {
-            if i % 64 == 0 && interrupted() {
+            if i.is_multiple_of(64) && interrupted() {
                 return vec![order[0]];
             }
             for (j, &v) in order.iter().enumerate() {
@@ -198,7 +198,7 @@ struct CliqueSearch<'a> {
 impl CliqueSearch<'_> {
     fn expand(&mut self, r: &mut Vec<usize>, mut p: Vec<u64>) {
         self.nodes += 1;
-        if self.nodes % 64 == 0 && (self.interrupted)() {
+        if self.nodes.is_multiple_of(64) && (self.interrupted)() {
             // Unwinds the search: every caller sees the limit passed.
             self.nodes = self.limit.saturating_add(1);
         }

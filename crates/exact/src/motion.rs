@@ -66,7 +66,7 @@ pub(crate) fn motions_into(
         }
         let mut shifts: HashMap<Point, u32> = HashMap::new();
         for (c, p) in from.points.iter().enumerate() {
-            if c % 256 == 0 && interrupted() {
+            if c.is_multiple_of(256) && interrupted() {
                 return None;
             }
             let gp = g.apply(*p);

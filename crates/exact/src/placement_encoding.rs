@@ -180,7 +180,7 @@ pub(crate) fn encode(
             return None;
         }
         for c in 0..per_piece[0].len() {
-            if c % 1024 == 0 && interrupted() {
+            if c.is_multiple_of(1024) && interrupted() {
                 return None;
             }
             let lits: Vec<i32> = per_piece.iter().map(|p| p[c]).collect();
@@ -247,7 +247,7 @@ pub(crate) fn encode(
     // Incompatible cells never share a piece.
     for (f, g) in incompat.iter().enumerate() {
         for a in 0..shapes[f].len() {
-            if a % 64 == 0 && interrupted() {
+            if a.is_multiple_of(64) && interrupted() {
                 return None;
             }
             for b in a + 1..shapes[f].len() {
