@@ -10,18 +10,26 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 echo "python: $(python3 --version)"
+venv=$(mktemp -d)
+trap 'rm -rf "$venv" "$venv.log"' EXIT
+# The dependencies (Ray is most of it) download while the Rust side builds.
+(
+  python3 -m venv "$venv" &&
+  "$venv/bin/pip" install -q -r python/ci-requirements.txt
+) > "$venv.log" 2>&1 &
+deps=$!
+start=$(date +%s)
 cargo fmt --manifest-path python/Cargo.toml -- --check
 cargo clippy -q --manifest-path python/Cargo.toml --all-targets -- -D warnings
 cargo build -q -p dissect-cli --release
 export DISSECT_BIN="$PWD/${CARGO_TARGET_DIR:-target}/release/dissect"
-
-venv=$(mktemp -d)
-trap 'rm -rf "$venv"' EXIT
-python3 -m venv "$venv"
-start=$(date +%s)
-"$venv/bin/pip" install -q --upgrade pip
-"$venv/bin/pip" install -q -r python/ci-requirements.txt
-echo "python: dependencies installed in $(($(date +%s) - start)) s"
+if ! wait "$deps"; then
+  cat "$venv.log"
+  echo "python: installing python/ci-requirements.txt failed"
+  exit 1
+fi
+rm -f "$venv.log"
+echo "python: fmt, clippy and dependencies in $(($(date +%s) - start)) s"
 start=$(date +%s)
 "$venv/bin/pip" install -q "./python[test,ray]"
 echo "python: pip install ./python built and installed in $(($(date +%s) - start)) s"
