@@ -208,7 +208,7 @@ impl Executor for PyExecutor {
             let got = self
                 .call
                 .call1(py, args)
-                .and_then(|r| r.extract::<Vec<Vec<u8>>>(py).map_err(PyErr::from));
+                .and_then(|r| r.extract::<Vec<Vec<u8>>>(py));
             match got {
                 Ok(list) => list
                     .iter()
