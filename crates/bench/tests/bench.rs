@@ -101,8 +101,8 @@ fn manifest_entry_errors_name_the_instance() {
     let path = Path::new("m.json");
     let cases = [
         (
-            r#"[{"name": "x", "lattice": "hex", "files": ["a.txt"]}]"#,
-            r#"m.json: instance "x" unknown lattice "hex""#,
+            r#"[{"name": "x", "lattice": "octagon", "files": ["a.txt"]}]"#,
+            r#"m.json: instance "x" unknown lattice "octagon""#,
         ),
         (
             r#"[{"name": "y", "lattice": "square", "files": []}]"#,

@@ -26,7 +26,7 @@ fn lattice(s: &str) -> Result<LatticeKind, String> {
 
 #[derive(clap::Args, Debug)]
 pub struct BoundArgs {
-    /// The lattice: square, tri4 or cubic.
+    /// The lattice: square, tri4, cubic, tri3 or hex.
     #[arg(long, default_value = "square", value_parser = lattice)]
     pub lattice: LatticeKind,
     /// Do not turn 2D pieces over (rotations only).
