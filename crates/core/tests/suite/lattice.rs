@@ -73,18 +73,36 @@ fn corners(kind: LatticeKind, [x, y, t]: Cell) -> Vec<[f64; 2]> {
     let (xf, yf) = (x as f64, y as f64);
     let h = 3f64.sqrt() / 2.0;
     match kind {
-        Square => vec![[xf, yf], [xf + 1.0, yf], [xf + 1.0, yf + 1.0], [xf, yf + 1.0]],
+        Square => vec![
+            [xf, yf],
+            [xf + 1.0, yf],
+            [xf + 1.0, yf + 1.0],
+            [xf, yf + 1.0],
+        ],
         Tri4 => {
-            let sq = [[xf, yf], [xf + 1.0, yf], [xf + 1.0, yf + 1.0], [xf, yf + 1.0]];
+            let sq = [
+                [xf, yf],
+                [xf + 1.0, yf],
+                [xf + 1.0, yf + 1.0],
+                [xf, yf + 1.0],
+            ];
             let t = t as usize;
             vec![sq[t], sq[(t + 1) % 4], [xf + 0.5, yf + 0.5]]
         }
         Tri3 => {
             let mid = (xf + 1.0) / 2.0;
             if (x + y).rem_euclid(2) == 0 {
-                vec![[mid, yf * h], [mid + 0.5, (yf + 1.0) * h], [mid - 0.5, (yf + 1.0) * h]]
+                vec![
+                    [mid, yf * h],
+                    [mid + 0.5, (yf + 1.0) * h],
+                    [mid - 0.5, (yf + 1.0) * h],
+                ]
             } else {
-                vec![[mid - 0.5, yf * h], [mid + 0.5, yf * h], [mid, (yf + 1.0) * h]]
+                vec![
+                    [mid - 0.5, yf * h],
+                    [mid + 0.5, yf * h],
+                    [mid, (yf + 1.0) * h],
+                ]
             }
         }
         Hex => {
@@ -106,7 +124,10 @@ fn share_an_edge(kind: LatticeKind, a: Cell, b: Cell) -> bool {
     let (ca, cb) = (corners(kind, a), corners(kind, b));
     let common = ca
         .iter()
-        .filter(|p| cb.iter().any(|q| (p[0] - q[0]).abs() < 1e-9 && (p[1] - q[1]).abs() < 1e-9))
+        .filter(|p| {
+            cb.iter()
+                .any(|q| (p[0] - q[0]).abs() < 1e-9 && (p[1] - q[1]).abs() < 1e-9)
+        })
         .count();
     common >= 2
 }
@@ -404,9 +425,13 @@ fn symmetries_are_rigid_motions_of_the_plane() {
             return;
         }
         let cells = cells_around(kind, 2);
-        let dist = |a: [f64; 2], b: [f64; 2]| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt();
+        let dist =
+            |a: [f64; 2], b: [f64; 2]| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt();
         for g in l.symmetries(true) {
-            let image = |c: Cell| l.from_point(g.apply(l.to_point(c))).expect("onto the lattice");
+            let image = |c: Cell| {
+                l.from_point(g.apply(l.to_point(c)))
+                    .expect("onto the lattice")
+            };
             for &a in cells.iter().step_by(3) {
                 for &b in cells.iter().step_by(5) {
                     let before = dist(centre(kind, a), centre(kind, b));
@@ -428,10 +453,12 @@ fn tri3_translations_keep_triangles_pointing_the_same_way() {
         let p = l.to_point(c);
         for t in [[1, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]] {
             // Only multiples of the modulus are translations.
-            assert_eq!(l.from_point([p[0] + t[0], p[1] + t[1], 0]), None, "{c:?} + {t:?}");
-            let moved = l
-                .from_point([p[0] + 3 * t[0], p[1] + 3 * t[1], 0])
-                .unwrap();
+            assert_eq!(
+                l.from_point([p[0] + t[0], p[1] + t[1], 0]),
+                None,
+                "{c:?} + {t:?}"
+            );
+            let moved = l.from_point([p[0] + 3 * t[0], p[1] + 3 * t[1], 0]).unwrap();
             assert_eq!(up(moved), up(c));
         }
         for (k, g) in l.symmetries(false).iter().enumerate() {
@@ -521,7 +548,13 @@ fn only_unimodular_matrices_of_finite_order_are_symmetries() {
         p = p.compose(&turn);
     }
     assert_eq!(p, Symmetry::IDENTITY);
-    assert_eq!(turn.inverse(), turn.compose(&turn).compose(&turn).compose(&turn).compose(&turn));
+    assert_eq!(
+        turn.inverse(),
+        turn.compose(&turn)
+            .compose(&turn)
+            .compose(&turn)
+            .compose(&turn)
+    );
     assert_eq!(turn.inverse().matrix(), [[1, 1, 0], [-1, 0, 0], [0, 0, 1]]);
     assert_eq!(turn.spread(), 2);
 }
