@@ -451,7 +451,7 @@ fn tri3_translations_keep_triangles_pointing_the_same_way() {
     let up = |c: Cell| (c[0] + c[1]).rem_euclid(2) == 0;
     for c in cells_around(Tri3, 2) {
         let p = l.to_point(c);
-        for t in [[1, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]] {
+        for t in [[1, 0, 0], [0, 1, 0], [2, 1, 0], [1, 2, 0]] {
             // Only multiples of the modulus are translations.
             assert_eq!(
                 l.from_point([p[0] + t[0], p[1] + t[1], 0]),
