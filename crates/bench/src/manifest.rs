@@ -111,7 +111,7 @@ impl Manifest {
             };
             if inst.lattice.parse::<LatticeKind>().is_err() {
                 return Err(bad(format!(
-                    "unknown lattice {:?} (expected square, tri4 or cubic)",
+                    "unknown lattice {:?} (expected square, tri4, cubic, tri3 or hex)",
                     inst.lattice
                 )));
             }

@@ -60,7 +60,7 @@ fn lattice(s: &str) -> Result<LatticeKind, String> {
 
 #[derive(Args, Debug)]
 pub struct SolveArgs {
-    /// The lattice: square, tri4 or cubic.
+    /// The lattice: square, tri4, cubic, tri3 or hex.
     #[arg(long, default_value = "square", value_parser = lattice)]
     pub lattice: LatticeKind,
     /// Do not turn 2D pieces over (rotations only).
@@ -153,7 +153,7 @@ pub struct VerifyArgs {
 
 #[derive(Args, Debug)]
 pub struct InfoArgs {
-    /// The lattice: square, tri4 or cubic.
+    /// The lattice: square, tri4, cubic, tri3 or hex.
     #[arg(long, default_value = "square", value_parser = lattice)]
     pub lattice: LatticeKind,
     /// The figures.

@@ -173,7 +173,7 @@ mod bad_cell {
         fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
             let v = Vec::<i64>::deserialize(d)?;
             let lattice = LATTICE.with(Cell::get);
-            let arity = if lattice == LatticeKind::Square { 2 } else { 3 };
+            let arity = lattice.cell_arity();
             let fits = v.len() == arity
                 && v.iter().all(|c| i32::try_from(*c).is_ok())
                 && (lattice != LatticeKind::Tri4 || (0..4).contains(&v[2]));
@@ -212,7 +212,7 @@ mod bad_cell {
     /// How a cell of `lattice` is written.
     pub fn form(lattice: LatticeKind) -> &'static str {
         match lattice {
-            LatticeKind::Square => "[x, y]",
+            LatticeKind::Square | LatticeKind::Tri3 | LatticeKind::Hex => "[x, y]",
             LatticeKind::Tri4 => "[x, y, t] with t in 0..=3",
             LatticeKind::Cubic => "[x, y, z]",
         }

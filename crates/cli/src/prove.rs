@@ -21,7 +21,7 @@ fn lattice(s: &str) -> Result<LatticeKind, String> {
 
 #[derive(clap::Args, Debug)]
 pub struct BoundArgs {
-    /// The lattice: square, tri4 or cubic.
+    /// The lattice: square, tri4, cubic, tri3 or hex.
     #[arg(long, default_value = "square", value_parser = lattice)]
     pub lattice: LatticeKind,
     /// Do not turn 2D pieces over (rotations only).
@@ -175,6 +175,13 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         println!(
             "a {}-piece dissection exists (found by SAT): the bound is optimal",
             p[0].len()
+        );
+    } else if let Some(dissect_exact::Limit::TooLarge { pieces, bytes }) = &outcome.limit {
+        println!(
+            "stopped: the SAT encoding for {pieces} pieces would need about {} MiB \
+             (over the cap of {} MiB); the bound below is the best proved",
+            bytes >> 20,
+            options.max_encoding_bytes >> 20
         );
     } else if outcome.stopped {
         println!("stopped (time limit or Ctrl-C); the bound below is the best proved");

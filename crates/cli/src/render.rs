@@ -59,7 +59,7 @@ pub struct RasterizeArgs {
     /// The picture (PNG, JPEG or SVG), or one picture per z layer (bottom first) for --lattice cubic.
     #[arg(required = true, num_args = 1.., value_name = "PICTURE")]
     pub pictures: Vec<PathBuf>,
-    /// The lattice: square, tri4 or cubic.
+    /// The lattice: square, tri4, cubic, tri3 or hex.
     #[arg(long, default_value = "square", value_parser = lattice)]
     pub lattice: LatticeKind,
     /// Exactly this many cells (triangles for tri4); scale and threshold are searched.

@@ -25,7 +25,11 @@ fn colour(i: usize) -> u8 {
 /// `tri4`: a 3×3 block per square whose side middles show the four
 /// triangles and whose corners and centre draw the diagonals where pieces
 /// meet (see `tri4_block_row`). `cubic`: the z layers side by side, left to
-/// right, each under a `z=N` header.
+/// right, each under a `z=N` header. `tri3`: one line per row, two columns
+/// per triangle, its edge to the left (`/` or `\\`, slanting as the edge
+/// does, so an up triangle sits between `/` and `\\`) then its letter. `hex`:
+/// one line per row, two columns per hexagon, odd rows indented by one
+/// column as the hexagons are.
 pub fn draw(lattice: LatticeKind, pieces: &[Vec<Cell>], colour_on: bool) -> String {
     let owner: HashMap<Cell, usize> = pieces
         .iter()
@@ -78,6 +82,41 @@ pub fn draw(lattice: LatticeKind, pieces: &[Vec<Cell>], colour_on: bool) -> Stri
                     }
                     out.push('\n');
                 }
+            }
+        }
+        LatticeKind::Tri3 => {
+            for y in min[1]..=max[1] {
+                let mut line = String::new();
+                for x in min[0]..=max[0] + 1 {
+                    let left = owner.get(&[x - 1, y, 0]).copied();
+                    let here = owner.get(&[x, y, 0]).copied();
+                    // The edge between x - 1 and x rises to the right ('/')
+                    // when x points up.
+                    line += match (left, here) {
+                        (None, None) => " ",
+                        _ if (x + y).rem_euclid(2) == 0 => "/",
+                        _ => "\\",
+                    };
+                    if x <= max[0] {
+                        line += &paint(here);
+                    }
+                }
+                out += line.trim_end();
+                out.push('\n');
+            }
+        }
+        LatticeKind::Hex => {
+            for y in min[1]..=max[1] {
+                let mut line = String::new();
+                if y.rem_euclid(2) == 1 {
+                    line.push(' ');
+                }
+                for x in min[0]..=max[0] {
+                    line += &paint(owner.get(&[x, y, 0]).copied());
+                    line.push(' ');
+                }
+                out += line.trim_end();
+                out.push('\n');
             }
         }
         LatticeKind::Cubic => {

@@ -87,6 +87,17 @@ impl Figure {
         false
     }
 
+    /// The figure moved by a lattice translation so that its blocks start at
+    /// `[0, 0, 0]`, or as near as the lattice allows (on `tri3`, `x` may
+    /// start at 1, since a translation keeps `x + y` even): the placement
+    /// the figure text format writes.
+    pub fn to_origin(&self) -> Figure {
+        let l = self.lattice.lattice();
+        let shift = l.shift_to_origin(&self.cells);
+        let cells = crate::lattice::translate_cells(l, &self.cells, shift);
+        Figure::new(self.lattice, cells).expect("a translated figure is a figure")
+    }
+
     /// Whether `cell` belongs to the figure.
     pub fn contains(&self, cell: Cell) -> bool {
         self.cells.binary_search(&cell).is_ok()

@@ -163,7 +163,10 @@ pub fn verify(d: &Dissection, figures: &[Figure]) -> Result<usize, Vec<Violation
         }
     }
     let mirror = d.mirror && l.supports_mirror();
-    let mats = own_symmetries(l.dim(), mirror);
+    let mats = match lattice {
+        LatticeKind::Tri3 | LatticeKind::Hex => own_hexagonal_symmetries(mirror),
+        _ => own_symmetries(l.dim(), mirror),
+    };
     let modulus = l.modulus();
     for i in 0..counts[0] {
         let base: Vec<Point> = d.pieces[0][i].iter().map(|c| l.to_point(*c)).collect();
@@ -246,6 +249,34 @@ fn own_symmetries(dim: usize, mirror: bool) -> Vec<[[i32; 3]; 3]> {
                 out.push(m);
             }
         }
+    }
+    out
+}
+
+/// The 12 symmetries of the triangular lattice in the skew basis
+/// `a = (1, 0)`, `b = (1/2, √3/2)` that `tri3` and `hex` points use: the
+/// powers of the 60° turn `a ↦ b, b ↦ b − a`, and with `mirror` each of them
+/// after the swap of `a` and `b`.
+fn own_hexagonal_symmetries(mirror: bool) -> Vec<[[i32; 3]; 3]> {
+    let turn = [[0, -1, 0], [1, 1, 0], [0, 0, 1]];
+    let swap = [[0, 1, 0], [1, 0, 0], [0, 0, 1]];
+    let times = |a: &[[i32; 3]; 3], b: &[[i32; 3]; 3]| {
+        let mut m = [[0; 3]; 3];
+        for r in 0..3 {
+            for c in 0..3 {
+                m[r][c] = (0..3).map(|k| a[r][k] * b[k][c]).sum();
+            }
+        }
+        m
+    };
+    let mut rotations = vec![[[1, 0, 0], [0, 1, 0], [0, 0, 1]]];
+    for k in 1..6 {
+        let next = times(&turn, &rotations[k - 1]);
+        rotations.push(next);
+    }
+    let mut out = rotations.clone();
+    if mirror {
+        out.extend(rotations.iter().map(|r| times(r, &swap)));
     }
     out
 }

@@ -105,12 +105,23 @@ pub(crate) struct Cheap {
     pub clique_figure: usize,
     /// Its cells (indices into that figure's sorted cells).
     pub clique: Vec<usize>,
+    /// The incompatibility graph of every figure (input order); `None` when
+    /// interrupted before they were all built (the bound then holds
+    /// without them).
+    pub graphs: Option<Vec<Incompatibility>>,
 }
 
 /// Branch-and-bound nodes spent on one figure's clique.
 const CLIQUE_NODES: usize = 200_000;
 
-pub(crate) fn cheap(figures: &[Figure], mirror: bool) -> Result<Cheap, ExactError> {
+/// The cheap bounds; `interrupted` (the stop flag or a deadline) cuts the
+/// incompatibility graphs and the clique search short, keeping what is
+/// proved by then.
+pub(crate) fn cheap(
+    figures: &[Figure],
+    mirror: bool,
+    interrupted: &dyn Fn() -> bool,
+) -> Result<Cheap, ExactError> {
     dissect_core::solver::check_figures(figures)?;
     let inst = Instance::new(figures, mirror, 0);
     let mut bound = Bound {
@@ -134,11 +145,19 @@ pub(crate) fn cheap(figures: &[Figure], mirror: bool) -> Result<Cheap, ExactErro
     }
     let mut clique_figure = 0;
     let mut clique = Vec::new();
+    let mut graphs = Some(Vec::with_capacity(inst.shapes.len()));
     for k in 0..inst.shapes.len() {
-        let c = Incompatibility::of_shape(&inst, k).clique(CLIQUE_NODES);
+        let Some(g) = Incompatibility::of_shape(&inst, k, interrupted) else {
+            graphs = None;
+            break;
+        };
+        let c = g.clique(CLIQUE_NODES, interrupted);
         if c.len() > clique.len() {
             clique = c;
             clique_figure = inst.order[k];
+        }
+        if let Some(gs) = &mut graphs {
+            gs.push(g);
         }
     }
     if clique.len() > bound.value {
@@ -160,11 +179,12 @@ pub(crate) fn cheap(figures: &[Figure], mirror: bool) -> Result<Cheap, ExactErro
         bound,
         clique_figure,
         clique,
+        graphs,
     })
 }
 
 /// The best bound that needs no SAT solver: components, congruence and
 /// incompatible cells.
 pub fn cheap_bound(figures: &[Figure], mirror: bool) -> Result<Bound, ExactError> {
-    Ok(cheap(figures, mirror)?.bound)
+    Ok(cheap(figures, mirror, &|| false)?.bound)
 }

@@ -27,7 +27,12 @@ impl Incompatibility {
     /// keeps inside `h` (a connected piece holding both contains such a
     /// path). For every motion, the components of the cells it keeps inside
     /// are computed once and every pair within one is marked compatible.
-    pub fn of_shape(inst: &Instance, k: usize) -> Incompatibility {
+    /// `None` when `interrupted` says so (it is asked once per motion).
+    pub fn of_shape(
+        inst: &Instance,
+        k: usize,
+        interrupted: &dyn Fn() -> bool,
+    ) -> Option<Incompatibility> {
         let s = &inst.shapes[k];
         let n = s.len();
         let words = n.div_ceil(64);
@@ -51,7 +56,10 @@ impl Incompatibility {
             for g in &inst.syms {
                 let images: Vec<Point> = s.points.iter().map(|p| g.apply(*p)).collect();
                 let mut shifts: HashSet<Point> = HashSet::new();
-                for gp in &images {
+                for (c, gp) in images.iter().enumerate() {
+                    if c.is_multiple_of(256) && interrupted() {
+                        return None;
+                    }
                     for q in &target.points {
                         let t = [q[0] - gp[0], q[1] - gp[1], q[2] - gp[2]];
                         if inst.is_translation(t) {
@@ -59,7 +67,12 @@ impl Incompatibility {
                         }
                     }
                 }
+                let mut shifts: Vec<Point> = shifts.into_iter().collect();
+                shifts.sort_unstable();
                 for t in shifts {
+                    if interrupted() {
+                        return None;
+                    }
                     for (c, gp) in images.iter().enumerate() {
                         inside[c] =
                             target
@@ -112,7 +125,16 @@ impl Incompatibility {
                 row[words - 1] &= (1u64 << (n % 64)) - 1;
             }
         }
-        Incompatibility { n, rows }
+        Some(Incompatibility { n, rows })
+    }
+
+    /// The number of ordered pairs of incompatible cells.
+    pub fn edges(&self) -> u64 {
+        self.rows
+            .iter()
+            .flatten()
+            .map(|w| u64::from(w.count_ones()))
+            .sum()
     }
 
     /// Whether cells `a` and `b` can never share a piece.
@@ -122,8 +144,9 @@ impl Incompatibility {
 
     /// A large clique (cell indices), found by branch and bound with greedy
     /// colouring; stops after `node_limit` nodes and then returns the best
-    /// clique seen, which is still a valid bound.
-    pub fn clique(&self, node_limit: usize) -> Vec<usize> {
+    /// clique seen, which is still a valid bound. `interrupted` is asked
+    /// every 64 nodes and ends the search the same way.
+    pub fn clique(&self, node_limit: usize, interrupted: &dyn Fn() -> bool) -> Vec<usize> {
         // Relabel by degree, largest first: colouring bounds get tighter.
         let deg: Vec<usize> = self
             .rows
@@ -139,6 +162,9 @@ impl Incompatibility {
         let w = m.div_ceil(64);
         let mut adj = vec![vec![0u64; w]; m];
         for (i, &u) in order.iter().enumerate() {
+            if i.is_multiple_of(64) && interrupted() {
+                return vec![order[0]];
+            }
             for (j, &v) in order.iter().enumerate() {
                 if self.apart(u, v) {
                     adj[i][j / 64] |= 1 << (j % 64);
@@ -154,22 +180,28 @@ impl Incompatibility {
             best: Vec::new(),
             nodes: 0,
             limit: node_limit,
+            interrupted,
         };
         search.expand(&mut Vec::new(), all);
         search.best.into_iter().map(|i| order[i]).collect()
     }
 }
 
-struct CliqueSearch {
+struct CliqueSearch<'a> {
     adj: Vec<Vec<u64>>,
     best: Vec<usize>,
     nodes: usize,
     limit: usize,
+    interrupted: &'a dyn Fn() -> bool,
 }
 
-impl CliqueSearch {
+impl CliqueSearch<'_> {
     fn expand(&mut self, r: &mut Vec<usize>, mut p: Vec<u64>) {
         self.nodes += 1;
+        if self.nodes.is_multiple_of(64) && (self.interrupted)() {
+            // Unwinds the search: every caller sees the limit passed.
+            self.nodes = self.limit.saturating_add(1);
+        }
         // Greedy colouring of p, in index order.
         let mut order: Vec<(usize, usize)> = Vec::new();
         let mut uncolored = p.clone();

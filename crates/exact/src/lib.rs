@@ -39,7 +39,8 @@ pub use motion::MotionSet;
 pub use placement_encoding::EncodingSize;
 pub use repair::{repair, repair_report, RepairOptions, RepairReport};
 pub use search::{
-    dimacs, search, Dimacs, ExactEvent, ExactObserver, ExactOptions, ExactOutcome, Mode,
+    dimacs, dimacs_within, search, Dimacs, ExactEvent, ExactObserver, ExactOptions, ExactOutcome,
+    Limit, Mode, DEFAULT_MAX_ENCODING_BYTES,
 };
 
 /// Occurs when figures cannot be given to the exact search.
@@ -58,4 +59,18 @@ pub enum ExactError {
     /// figures into the same number of labels.
     #[error("invalid candidate: {0}")]
     Candidate(String),
+    /// Occurs when an encoding would need more memory than allowed.
+    #[error(
+        "the SAT encoding for {pieces} pieces would need about {} MiB, over the cap of {} MiB",
+        bytes >> 20,
+        cap >> 20
+    )]
+    TooLarge {
+        /// K.
+        pieces: usize,
+        /// The estimate, in bytes.
+        bytes: u64,
+        /// The cap, in bytes.
+        cap: u64,
+    },
 }

@@ -49,8 +49,14 @@ pub(crate) struct Motion {
 }
 
 /// Every motion of `set` under which at least one cell of shape 0 lands in
-/// shape `to`, sorted by symmetry then shift.
-pub(crate) fn motions_into(inst: &Instance, to: usize, set: MotionSet) -> Vec<Motion> {
+/// shape `to`, sorted by symmetry then shift; `None` when `interrupted`
+/// says so (asked every 256 cells).
+pub(crate) fn motions_into(
+    inst: &Instance,
+    to: usize,
+    set: MotionSet,
+    interrupted: &dyn Fn() -> bool,
+) -> Option<Vec<Motion>> {
     let from = &inst.shapes[0];
     let target = &inst.shapes[to];
     let mut out = Vec::new();
@@ -59,7 +65,10 @@ pub(crate) fn motions_into(inst: &Instance, to: usize, set: MotionSet) -> Vec<Mo
             continue;
         }
         let mut shifts: HashMap<Point, u32> = HashMap::new();
-        for p in &from.points {
+        for (c, p) in from.points.iter().enumerate() {
+            if c.is_multiple_of(256) && interrupted() {
+                return None;
+            }
             let gp = g.apply(*p);
             for q in &target.points {
                 let t = [q[0] - gp[0], q[1] - gp[1], q[2] - gp[2]];
@@ -75,7 +84,7 @@ pub(crate) fn motions_into(inst: &Instance, to: usize, set: MotionSet) -> Vec<Mo
             transform: Transform::new(*g, t),
         }));
     }
-    out
+    Some(out)
 }
 
 /// The indices of the symmetries `g` for which `g(shape) + t = shape` for

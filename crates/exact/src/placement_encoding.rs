@@ -55,10 +55,106 @@ pub struct EncodingSize {
     pub motions: usize,
 }
 
+/// Bytes the SAT solver spends per clause of the encoding (the clause, its
+/// two watches, a share of learnt clauses), roughly: for the size guard.
+const BYTES_PER_CLAUSE: u64 = 64;
+/// Bytes per variable (assignment, level, reason, activity, heap, watch
+/// lists), roughly.
+const BYTES_PER_VAR: u64 = 96;
+/// Bytes per clause of a recorded DIMACS text.
+const BYTES_PER_RECORDED_CLAUSE: u64 = 24;
+
+impl EncodingSize {
+    /// The memory the SAT solver needs for it, estimated (recording the
+    /// clauses as text adds `recorded` bytes per clause).
+    pub fn bytes(&self, recorded: bool) -> u64 {
+        let per_clause = BYTES_PER_CLAUSE
+            + if recorded {
+                BYTES_PER_RECORDED_CLAUSE
+            } else {
+                0
+            };
+        (self.vars as u64)
+            .saturating_mul(BYTES_PER_VAR)
+            .saturating_add((self.clauses as u64).saturating_mul(per_clause))
+    }
+}
+
+/// An upper estimate of the motions of `set` from shape 0 into shape `to`:
+/// the exact count when that is cheap, else the number of shifts within
+/// the bounding boxes.
+fn motion_count(inst: &Instance, to: usize, set: MotionSet) -> usize {
+    let syms = (0..inst.syms.len())
+        .filter(|&g| set.admits(g, inst.syms[g].determinant()))
+        .count();
+    let (a, b) = (&inst.shapes[0], &inst.shapes[to]);
+    if (a.len() as u64) * (b.len() as u64) * (syms as u64) <= 4_000_000 {
+        return motions_into(inst, to, set, &|| false).map_or(0, |m| m.len());
+    }
+    let extent = |s: &crate::instance::Shape, d: usize| {
+        let lo = s.points.iter().map(|p| p[d]).min().unwrap_or(0);
+        let hi = s.points.iter().map(|p| p[d]).max().unwrap_or(0);
+        (hi - lo) as usize
+    };
+    // Symmetries may swap axes: use the largest extent on every axis.
+    let big = |s: &crate::instance::Shape| (0..inst.dim).map(|d| extent(s, d)).max().unwrap_or(0);
+    let side = big(a) + big(b) + 1;
+    let per_axis = side.div_ceil(inst.modulus.max(1) as usize).max(1);
+    syms.saturating_mul(per_axis.saturating_pow(inst.dim as u32))
+}
+
+/// The size of [`encode`]'s output for `k` pieces, estimated from above
+/// without building it (so a hopeless encoding is refused before it takes
+/// the memory).
+///
+/// The first `min(k, max(clique, 1))` pieces are anchored (a cell of
+/// theirs is fixed), so their motions are at most one per symmetry and
+/// target cell.
+pub(crate) fn estimate(
+    inst: &Instance,
+    k: usize,
+    set: MotionSet,
+    clique: usize,
+    incompat: &[Incompatibility],
+) -> EncodingSize {
+    let anchored = clique.max(1).min(k) as u64;
+    let syms = (0..inst.syms.len())
+        .filter(|&g| set.admits(g, inst.syms[g].determinant()))
+        .count() as u64;
+    let figures = inst.shapes.len();
+    let n = inst.shapes[0].len();
+    let k64 = k as u64;
+    let n64 = n as u64;
+    let f64_ = figures as u64;
+    let mut vars = f64_ * k64 * n64 + 2 * k64 * n64;
+    let mut clauses =
+        f64_ * n64 * (1 + k64 * k64.saturating_sub(1) / 2) + 4 * k64 * n64 + k64 * f64_ * n64;
+    // Incompatible pairs (both orders are counted by `apart` rows).
+    let pairs: u64 = incompat.iter().map(|g| g.edges() / 2).sum();
+    clauses = clauses.saturating_add(pairs.saturating_mul(k64));
+    let mut motions = 0u64;
+    for f in 1..figures {
+        let all = motion_count(inst, f, set) as u64;
+        let one_anchored = all.min(syms * inst.shapes[f].len() as u64);
+        let m = all * (k64 - anchored) + one_anchored * anchored;
+        motions = motions.saturating_add(m);
+        let per = (n + inst.shapes[f].len()) as u64;
+        clauses = clauses.saturating_add(m.saturating_mul(per + 1));
+    }
+    vars = vars.saturating_add(motions);
+    EncodingSize {
+        vars: vars.min(usize::MAX as u64) as usize,
+        clauses: clauses.min(usize::MAX as u64) as usize,
+        motions: motions.min(usize::MAX as u64) as usize,
+    }
+}
+
 /// Encodes "at most `k` pieces" with motions from `set` into `sat`.
 ///
 /// `clique` lists cells of shape 0 that are pairwise incompatible (at most
 /// `k` of them are used); `incompat[f]` is shape `f`'s incompatibility graph.
+/// `None` when `interrupted` says so (it is asked for every piece and
+/// motion).
 pub(crate) fn encode(
     inst: &Instance,
     sat: &mut Sat<'_>,
@@ -66,7 +162,8 @@ pub(crate) fn encode(
     set: MotionSet,
     clique: &[usize],
     incompat: &[Incompatibility],
-) -> Encoding {
+    interrupted: &dyn Fn() -> bool,
+) -> Option<Encoding> {
     let shapes = &inst.shapes;
     let n = shapes[0].len();
     let cell: Vec<Vec<Vec<i32>>> = shapes
@@ -79,7 +176,13 @@ pub(crate) fn encode(
         .collect();
     // Exactly one piece per cell.
     for per_piece in &cell {
+        if interrupted() {
+            return None;
+        }
         for c in 0..per_piece[0].len() {
+            if c.is_multiple_of(1024) && interrupted() {
+                return None;
+            }
             let lits: Vec<i32> = per_piece.iter().map(|p| p[c]).collect();
             sat.add(&lits);
             for i in 0..k {
@@ -117,6 +220,9 @@ pub(crate) fn encode(
     // then every cell of the piece has a neighbour in it, in every shape.
     #[allow(clippy::needless_range_loop)] // piece i of every shape
     for i in 0..k {
+        if interrupted() {
+            return None;
+        }
         let big = sat.var();
         let mut seen_before: Option<i32> = None;
         for &x in &cell[0][i] {
@@ -141,6 +247,9 @@ pub(crate) fn encode(
     // Incompatible cells never share a piece.
     for (f, g) in incompat.iter().enumerate() {
         for a in 0..shapes[f].len() {
+            if a.is_multiple_of(64) && interrupted() {
+                return None;
+            }
             for b in a + 1..shapes[f].len() {
                 if g.apart(a, b) {
                     for piece in &cell[f] {
@@ -153,7 +262,7 @@ pub(crate) fn encode(
     // Motions.
     let mut motion: Vec<Vec<Vec<(i32, Motion)>>> = vec![Vec::new()];
     for f in 1..shapes.len() {
-        let all = motions_into(inst, f, set);
+        let all = motions_into(inst, f, set, interrupted)?;
         let group: Vec<usize> = self_symmetries(inst, f)
             .into_iter()
             .filter(|&h| set.admits(h, inst.syms[h].determinant()))
@@ -178,6 +287,9 @@ pub(crate) fn encode(
             let lits: Vec<i32> = vars.iter().map(|(v, _)| *v).collect();
             sat.add(&lits);
             for &(mv, m) in &vars {
+                if interrupted() {
+                    return None;
+                }
                 let t = m.transform;
                 for (a, p) in shapes[0].points.iter().enumerate() {
                     let img = t.apply(*p);
@@ -200,12 +312,12 @@ pub(crate) fn encode(
         motion.push(per_piece);
     }
     anchor.truncate(k);
-    Encoding {
+    Some(Encoding {
         k,
         anchors: anchor,
         cell,
         motion,
-    }
+    })
 }
 
 impl Encoding {

@@ -14,14 +14,30 @@
 use crate::instance::Shape;
 use crate::sat_backend::Sat;
 
+/// The (variables, clauses) [`add_connectivity`] adds for `k` pieces of a
+/// shape of `n` cells with `edges` ordered neighbour pairs, from above.
+pub(crate) fn connectivity_size(n: usize, k: usize, edges: usize) -> (u64, u64) {
+    let depth = (n + 1).saturating_sub(k).max(1) as u64;
+    let (n, k, e) = (n as u64, k as u64, edges as u64);
+    let vars = k.saturating_mul(n.saturating_mul(depth + 3));
+    let clauses = k.saturating_mul(
+        n.saturating_mul(depth + 4)
+            .saturating_add(e.saturating_mul(depth)),
+    );
+    (vars, clauses)
+}
+
 /// Adds "every piece is connected in `shape`" for the pieces whose cell
 /// variables are `cell[i][c]`; `anchors[i]` is piece `i`'s root if known.
+/// `false` when `interrupted` cut it short (the solver then holds part of
+/// it, which is still implied by connectivity).
 pub(crate) fn add_connectivity(
     sat: &mut Sat<'_>,
     shape: &Shape,
     cell: &[Vec<i32>],
     anchors: &[usize],
-) {
+    interrupted: &dyn Fn() -> bool,
+) -> bool {
     let n = shape.len();
     let k = cell.len();
     let depth = (n + 1).saturating_sub(k).max(1);
@@ -51,6 +67,9 @@ pub(crate) fn add_connectivity(
             }
         }
         for _ in 0..depth {
+            if interrupted() {
+                return false;
+            }
             let mut next: Vec<Option<i32>> = vec![None; n];
             for c in 0..n {
                 let mut support: Vec<i32> = Vec::new();
@@ -77,4 +96,5 @@ pub(crate) fn add_connectivity(
             }
         }
     }
+    true
 }

@@ -12,8 +12,8 @@ use crate::connectivity_cut::cuts;
 use crate::incompatible_clique::Incompatibility;
 use crate::instance::Instance;
 use crate::motion::MotionSet;
-use crate::placement_encoding::{encode, EncodingSize};
-use crate::reachability_encoding::add_connectivity;
+use crate::placement_encoding::{encode, estimate, EncodingSize};
+use crate::reachability_encoding::{add_connectivity, connectivity_size};
 use crate::sat_backend::Sat;
 use crate::ExactError;
 
@@ -45,8 +45,41 @@ pub struct ExactOptions {
     /// Connectivity cuts added per split piece and model.
     pub cuts_per_piece: usize,
     /// On the first model with a split piece, add the full connectivity
-    /// encoding (reachability from each piece's root) instead of cuts.
+    /// encoding (reachability from each piece's root) instead of cuts
+    /// (when it fits in `max_encoding_bytes`; else cuts).
     pub eager_connectivity: bool,
+    /// The most SAT conflicts the whole search may spend (`None`: no
+    /// limit): a measure of work that is the same on every machine, so with
+    /// it and no deadline the outcome never depends on timing. Spent, the
+    /// search ends as inconclusive ([`Limit::ConflictBudget`]).
+    pub conflict_budget: Option<u64>,
+    /// Conflicts for each restricted-motion pass of [`Mode::Minimum`]; when
+    /// set it replaces `restricted_time`, so the passes end the same way on
+    /// every machine.
+    pub restricted_conflicts: Option<u64>,
+    /// Refuse an encoding estimated to need more memory than this many
+    /// bytes: the search ends as inconclusive ([`Limit::TooLarge`]) instead
+    /// of exhausting the machine.
+    pub max_encoding_bytes: u64,
+}
+
+/// The default of [`ExactOptions::max_encoding_bytes`]: 512 MiB.
+pub const DEFAULT_MAX_ENCODING_BYTES: u64 = 512 << 20;
+
+/// Why a search ended before it could prove or find more.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Limit {
+    /// [`ExactOptions::conflict_budget`] was spent.
+    ConflictBudget,
+    /// The encoding for `pieces` pieces was estimated at `bytes`, over
+    /// [`ExactOptions::max_encoding_bytes`].
+    TooLarge {
+        /// K.
+        pieces: usize,
+        /// The estimate.
+        bytes: u64,
+    },
 }
 
 impl Default for ExactOptions {
@@ -59,6 +92,9 @@ impl Default for ExactOptions {
             restricted_time: Duration::from_secs(10),
             cuts_per_piece: 4,
             eager_connectivity: true,
+            conflict_budget: None,
+            restricted_conflicts: None,
+            max_encoding_bytes: DEFAULT_MAX_ENCODING_BYTES,
         }
     }
 }
@@ -91,6 +127,16 @@ pub enum ExactEvent {
     ConnectivityEncoded {
         /// K.
         pieces: usize,
+    },
+    /// The encoding for `pieces` pieces would be too large: the search ends
+    /// there (see [`Limit::TooLarge`]).
+    TooLarge {
+        /// K.
+        pieces: usize,
+        /// Its estimated size.
+        size: EncodingSize,
+        /// Its estimated memory.
+        bytes: u64,
     },
     /// No dissection into `bound.value - 1` pieces: the bound rose.
     Refuted(Bound),
@@ -129,9 +175,13 @@ pub struct ExactOutcome {
     pub lower_bound: Bound,
     /// A verified dissection (`pieces[f][i]`, input order), if one was found.
     pub found: Option<Vec<Vec<Vec<Cell>>>>,
-    /// Whether the search ended before it could finish (stop flag, deadline
-    /// or the caller's upper bound).
+    /// Whether the search ended before it could finish (stop flag, deadline,
+    /// the caller's upper bound or a [`Limit`]).
     pub stopped: bool,
+    /// The limit that ended it, if one did.
+    pub limit: Option<Limit>,
+    /// SAT conflicts spent.
+    pub conflicts: u64,
 }
 
 impl ExactOutcome {
@@ -144,9 +194,15 @@ impl ExactOutcome {
 }
 
 enum Pass {
-    Unsat { cuts: usize, seconds: f64 },
+    Unsat {
+        cuts: usize,
+        seconds: f64,
+    },
     Found(Vec<Vec<Vec<usize>>>),
+    /// Stopped, past the deadline or out of conflicts.
     Unknown,
+    /// The encoding would need this many bytes.
+    TooLarge(u64),
 }
 
 struct Context<'a> {
@@ -158,15 +214,49 @@ struct Context<'a> {
     observer: &'a dyn ExactObserver,
     cuts_per_piece: usize,
     eager_connectivity: bool,
+    max_bytes: u64,
+    /// Conflicts spent so far.
+    spent: std::cell::Cell<u64>,
 }
 
 impl Context<'_> {
     /// One SAT model for `k` pieces with `set` motions, with connectivity
-    /// cuts until a model is connected, the model is UNSAT, or time is up.
-    fn pass(&self, k: usize, set: MotionSet, deadline: Option<Instant>) -> Pass {
+    /// cuts until a model is connected, the model is UNSAT, time is up or
+    /// `conflicts` are spent.
+    fn pass(
+        &self,
+        k: usize,
+        set: MotionSet,
+        deadline: Option<Instant>,
+        conflicts: Option<u64>,
+    ) -> Pass {
         let start = Instant::now();
+        let interrupted =
+            || self.stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
+        let estimate = estimate(self.inst, k, set, self.clique.len(), self.incompat);
+        let bytes = estimate.bytes(false);
+        if bytes > self.max_bytes {
+            self.observer.on_event(&ExactEvent::TooLarge {
+                pieces: k,
+                size: estimate,
+                bytes,
+            });
+            return Pass::TooLarge(bytes);
+        }
         let mut sat = Sat::new(self.stop, Some((self.upper, k)));
-        let enc = encode(self.inst, &mut sat, k, set, self.clique, self.incompat);
+        sat.set_conflict_limit(conflicts);
+        let spend = |sat: &Sat<'_>| self.spent.set(self.spent.get() + sat.conflicts());
+        let Some(enc) = encode(
+            self.inst,
+            &mut sat,
+            k,
+            set,
+            self.clique,
+            self.incompat,
+            &interrupted,
+        ) else {
+            return Pass::Unknown;
+        };
         self.observer.on_event(&ExactEvent::Encoded {
             pieces: k,
             motions: set,
@@ -177,9 +267,23 @@ impl Context<'_> {
             },
         });
         let mut total = 0;
-        let mut connected_encoding = false;
+        let shape0 = &self.inst.shapes[0];
+        let (cv, cc) = connectivity_size(shape0.len(), k, shape0.adj.iter().map(Vec::len).sum());
+        let connectivity_fits = bytes.saturating_add(
+            EncodingSize {
+                vars: cv.min(usize::MAX as u64) as usize,
+                clauses: cc.min(usize::MAX as u64) as usize,
+                motions: 0,
+            }
+            .bytes(false),
+        ) <= self.max_bytes;
+        let mut connected_encoding = !(self.eager_connectivity && connectivity_fits);
         loop {
-            match sat.solve(deadline) {
+            let answer = sat.solve(deadline);
+            if answer != Some(true) {
+                spend(&sat);
+            }
+            match answer {
                 None => return Pass::Unknown,
                 Some(false) => {
                     return Pass::Unsat {
@@ -191,19 +295,28 @@ impl Context<'_> {
                     let pieces = enc.decode(&sat);
                     let found = cuts(&self.inst.shapes, &pieces, self.cuts_per_piece);
                     if found.is_empty() {
+                        spend(&sat);
                         return Pass::Found(pieces);
                     }
-                    if self.eager_connectivity && !connected_encoding {
-                        add_connectivity(
+                    if !connected_encoding {
+                        if !add_connectivity(
                             &mut sat,
                             &self.inst.shapes[0],
                             &enc.cell[0],
                             &enc.anchors,
-                        );
+                            &interrupted,
+                        ) {
+                            spend(&sat);
+                            return Pass::Unknown;
+                        }
                         connected_encoding = true;
                         self.observer
                             .on_event(&ExactEvent::ConnectivityEncoded { pieces: k });
                         continue;
+                    }
+                    if interrupted() {
+                        spend(&sat);
+                        return Pass::Unknown;
                     }
                     for cut in &found {
                         for piece in &enc.cell[cut.shape] {
@@ -239,9 +352,21 @@ pub fn search(
     observer: &dyn ExactObserver,
 ) -> Result<ExactOutcome, ExactError> {
     let start = Instant::now();
-    let cheap = cheap(figures, options.mirror)?;
+    let out_of_time = || options.deadline.is_some_and(|d| Instant::now() >= d);
+    let interrupted = || stop.load(Ordering::Relaxed) || out_of_time();
+    let mut cheap = cheap(figures, options.mirror, &interrupted)?;
     observer.on_event(&ExactEvent::CheapBound(cheap.bound.clone()));
-    let (inst, clique, incompat) = model_inputs(figures, options.mirror, &cheap);
+    let mut outcome = ExactOutcome {
+        lower_bound: cheap.bound.clone(),
+        found: None,
+        stopped: false,
+        limit: None,
+        conflicts: 0,
+    };
+    let Some((inst, clique, incompat)) = model_inputs(figures, options.mirror, &mut cheap) else {
+        outcome.stopped = true;
+        return Ok(outcome);
+    };
     let ctx = Context {
         inst: &inst,
         clique: &clique,
@@ -251,34 +376,49 @@ pub fn search(
         observer,
         cuts_per_piece: options.cuts_per_piece.max(1),
         eager_connectivity: options.eager_connectivity,
+        max_bytes: options.max_encoding_bytes,
+        spent: std::cell::Cell::new(0),
     };
-    let mut outcome = ExactOutcome {
-        lower_bound: cheap.bound,
-        found: None,
-        stopped: false,
+    let left = || {
+        options
+            .conflict_budget
+            .map(|b| b.saturating_sub(ctx.spent.get()))
     };
     let cells = inst.shapes[0].len();
     let max = options.max_pieces.unwrap_or(cells).min(cells);
-    let out_of_time = || options.deadline.is_some_and(|d| Instant::now() >= d);
     let mut k = outcome.lower_bound.value;
     let restricted: Vec<MotionSet> = match options.mode {
         Mode::LowerBound => Vec::new(),
         Mode::Minimum if inst.dim == 3 || !inst.mirror => vec![MotionSet::Translations],
         Mode::Minimum => vec![MotionSet::Translations, MotionSet::Rotations],
     };
-    while k <= max {
+    'levels: while k <= max {
         if upper.load(Ordering::SeqCst) <= k {
             break;
         }
-        if stop.load(Ordering::SeqCst) || out_of_time() {
+        if interrupted() {
             outcome.stopped = true;
+            break;
+        }
+        if left() == Some(0) {
+            outcome.stopped = true;
+            outcome.limit = Some(Limit::ConflictBudget);
             break;
         }
         let mut found = None;
         for &set in &restricted {
-            let budget = Instant::now() + options.restricted_time;
-            let deadline = Some(options.deadline.map_or(budget, |d| d.min(budget)));
-            match ctx.pass(k, set, deadline) {
+            let (deadline, conflicts) = match options.restricted_conflicts {
+                Some(c) => (options.deadline, Some(left().map_or(c, |l| l.min(c)))),
+                None => {
+                    let budget = Instant::now().checked_add(options.restricted_time);
+                    let d = match (options.deadline, budget) {
+                        (Some(d), Some(b)) => Some(d.min(b)),
+                        (d, b) => d.or(b),
+                    };
+                    (d, left())
+                }
+            };
+            match ctx.pass(k, set, deadline, conflicts) {
                 Pass::Found(p) => {
                     found = Some(p);
                     break;
@@ -288,19 +428,19 @@ pub fn search(
                     motions: set,
                     timed_out: false,
                 }),
-                Pass::Unknown => observer.on_event(&ExactEvent::Inconclusive {
+                Pass::Unknown | Pass::TooLarge(_) => observer.on_event(&ExactEvent::Inconclusive {
                     pieces: k,
                     motions: set,
                     timed_out: true,
                 }),
             }
-            if stop.load(Ordering::SeqCst) || upper.load(Ordering::SeqCst) <= k {
+            if interrupted() || upper.load(Ordering::SeqCst) <= k {
                 break;
             }
         }
         let found = match found {
             Some(p) => Some(p),
-            None => match ctx.pass(k, MotionSet::All, options.deadline) {
+            None => match ctx.pass(k, MotionSet::All, options.deadline, left()) {
                 Pass::Found(p) => Some(p),
                 Pass::Unsat { cuts, seconds } => {
                     outcome.lower_bound = Bound {
@@ -313,10 +453,18 @@ pub fn search(
                     };
                     observer.on_event(&ExactEvent::Refuted(outcome.lower_bound.clone()));
                     k += 1;
-                    continue;
+                    continue 'levels;
                 }
                 Pass::Unknown => {
                     outcome.stopped = upper.load(Ordering::SeqCst) > k;
+                    if outcome.stopped && left() == Some(0) {
+                        outcome.limit = Some(Limit::ConflictBudget);
+                    }
+                    break;
+                }
+                Pass::TooLarge(bytes) => {
+                    outcome.stopped = true;
+                    outcome.limit = Some(Limit::TooLarge { pieces: k, bytes });
                     break;
                 }
             },
@@ -335,17 +483,19 @@ pub fn search(
             break;
         }
     }
+    outcome.conflicts = ctx.spent.get();
     Ok(outcome)
 }
 
 /// The instance (reference shape: the one holding the cheap bound's
 /// clique, when it has two or more cells), that clique and the
-/// incompatibility graph of every shape.
+/// incompatibility graph of every shape (taken from `cheap`); `None` when
+/// the cheap bounds were interrupted before the graphs were built.
 fn model_inputs(
     figures: &[Figure],
     mirror: bool,
-    cheap: &Cheap,
-) -> (Instance, Vec<usize>, Vec<Incompatibility>) {
+    cheap: &mut Cheap,
+) -> Option<(Instance, Vec<usize>, Vec<Incompatibility>)> {
     let reference = if cheap.clique.len() >= 2 {
         cheap.clique_figure
     } else {
@@ -357,10 +507,14 @@ fn model_inputs(
         Vec::new()
     };
     let inst = Instance::new(figures, mirror, reference);
-    let incompat: Vec<Incompatibility> = (0..inst.shapes.len())
-        .map(|k| Incompatibility::of_shape(&inst, k))
+    let mut graphs: Vec<Option<Incompatibility>> =
+        cheap.graphs.take()?.into_iter().map(Some).collect();
+    let incompat: Vec<Incompatibility> = inst
+        .order
+        .iter()
+        .map(|&i| graphs[i].take().expect("a permutation"))
         .collect();
-    (inst, clique, incompat)
+    Some((inst, clique, incompat))
 }
 
 /// A CNF in DIMACS form.
@@ -380,12 +534,62 @@ pub struct Dimacs {
 /// proves that no `k`-piece dissection exists. For other SAT solvers and
 /// for measuring them; it solves nothing.
 pub fn dimacs(figures: &[Figure], mirror: bool, k: usize) -> Result<Dimacs, ExactError> {
-    let cheap = cheap(figures, mirror)?;
-    let (inst, clique, incompat) = model_inputs(figures, mirror, &cheap);
+    dimacs_within(figures, mirror, k, DEFAULT_MAX_ENCODING_BYTES)
+}
+
+/// [`dimacs`], refusing ([`ExactError::TooLarge`]) a CNF estimated to need
+/// more than `max_bytes` of memory (the solver's and the text's) before
+/// building it. `k` above the number of cells is taken as that number.
+pub fn dimacs_within(
+    figures: &[Figure],
+    mirror: bool,
+    k: usize,
+    max_bytes: u64,
+) -> Result<Dimacs, ExactError> {
+    dissect_core::solver::check_figures(figures)?;
+    let asked = k;
+    let k = k.clamp(1, figures[0].len());
+    // The part of the size that needs no geometry first: cheap, and enough
+    // to refuse a huge K at once.
+    let n = figures[0].len() as u64;
+    let one_of = EncodingSize {
+        vars: (figures.len() as u64 * n * k as u64).min(usize::MAX as u64) as usize,
+        clauses: (figures.len() as u64)
+            .saturating_mul(n)
+            .saturating_mul((k as u64).saturating_mul(k as u64 - 1) / 2 + 1)
+            .min(usize::MAX as u64) as usize,
+        motions: 0,
+    };
+    let too_large = |size: EncodingSize| {
+        let bytes = size.bytes(true);
+        (bytes > max_bytes).then_some(ExactError::TooLarge {
+            pieces: asked,
+            bytes,
+            cap: max_bytes,
+        })
+    };
+    if let Some(e) = too_large(one_of) {
+        return Err(e);
+    }
+    let mut cheap = cheap(figures, mirror, &|| false)?;
+    let (inst, clique, incompat) =
+        model_inputs(figures, mirror, &mut cheap).expect("not interrupted");
+    if let Some(e) = too_large(estimate(&inst, k, MotionSet::All, clique.len(), &incompat)) {
+        return Err(e);
+    }
     let stop = AtomicBool::new(false);
     let mut sat = Sat::new(&stop, None);
     sat.record();
-    encode(&inst, &mut sat, k, MotionSet::All, &clique, &incompat);
+    encode(
+        &inst,
+        &mut sat,
+        k,
+        MotionSet::All,
+        &clique,
+        &incompat,
+        &|| false,
+    )
+    .expect("not interrupted");
     let (text, clauses) = sat.dimacs().expect("recording");
     Ok(Dimacs {
         text,
@@ -445,6 +649,74 @@ mod tests {
         }
         assert_eq!(clauses, d.clauses);
         sat.solve(None).expect("no deadline")
+    }
+
+    #[test]
+    fn the_estimate_bounds_the_encoding_and_interrupts_end_every_builder() {
+        let figs: Vec<Figure> = ["####\n#..#\n####\n", "#####\n#####\n"]
+            .iter()
+            .map(|t| parse_figure(t, LatticeKind::Square).expect("figure"))
+            .collect();
+        let mut cheap = cheap(&figs, true, &|| false).expect("valid figures");
+        let (inst, clique, incompat) = model_inputs(&figs, true, &mut cheap).expect("graphs");
+        let stop = AtomicBool::new(false);
+        for k in 1..=5 {
+            let est = estimate(&inst, k, MotionSet::All, clique.len(), &incompat);
+            let mut sat = Sat::new(&stop, None);
+            encode(
+                &inst,
+                &mut sat,
+                k,
+                MotionSet::All,
+                &clique,
+                &incompat,
+                &|| false,
+            )
+            .expect("not interrupted");
+            assert!(est.vars >= sat.vars(), "k={k}: {est:?} vs {}", sat.vars());
+            assert!(est.clauses >= sat.clauses(), "k={k}: {est:?}");
+            assert!(est.clauses <= 4 * sat.clauses(), "k={k}: {est:?}");
+        }
+        let mut sat = Sat::new(&stop, None);
+        assert!(encode(
+            &inst,
+            &mut sat,
+            3,
+            MotionSet::All,
+            &clique,
+            &incompat,
+            &|| true
+        )
+        .is_none());
+        let enc = encode(
+            &inst,
+            &mut sat,
+            3,
+            MotionSet::All,
+            &clique,
+            &incompat,
+            &|| false,
+        )
+        .expect("not interrupted");
+        assert!(!add_connectivity(
+            &mut sat,
+            &inst.shapes[0],
+            &enc.cell[0],
+            &enc.anchors,
+            &|| true
+        ));
+        assert!(add_connectivity(
+            &mut sat,
+            &inst.shapes[0],
+            &enc.cell[0],
+            &enc.anchors,
+            &|| false
+        ));
+        assert!(Incompatibility::of_shape(&inst, 0, &|| true).is_none());
+        assert!(crate::motion::motions_into(&inst, 1, MotionSet::All, &|| true).is_none());
+        // An interrupted clique search still returns a clique (a bound).
+        let c = incompat[0].clique(1_000_000, &|| true);
+        assert!(!c.is_empty());
     }
 
     #[test]

@@ -177,6 +177,12 @@ pub fn rasterize(pictures: &[&[u8]], opts: &RasterOptions) -> Result<Rasterized,
     if pictures.is_empty() {
         return Err(RenderError::BadOption("no picture given".into()));
     }
+    if matches!(opts.lattice, LatticeKind::Tri3 | LatticeKind::Hex) {
+        return Err(RenderError::BadOption(format!(
+            "rasterizing onto the {} lattice is not supported yet",
+            opts.lattice
+        )));
+    }
     if opts.lattice != LatticeKind::Cubic && pictures.len() > 1 {
         return Err(RenderError::BadOption(format!(
             "{} pictures given: only --lattice cubic stacks several pictures (one per z layer)",
@@ -277,7 +283,9 @@ fn coverage(
                     let f = sum[t] / cnt[t].max(1) as f64;
                     if f > 0.0 {
                         let cell = match lattice {
-                            LatticeKind::Square => [cx as i32, cy as i32, 0],
+                            LatticeKind::Square | LatticeKind::Tri3 | LatticeKind::Hex => {
+                                [cx as i32, cy as i32, 0]
+                            }
                             LatticeKind::Tri4 => [cx as i32, cy as i32, t as i32],
                             LatticeKind::Cubic => [cx as i32, cy as i32, cz as i32],
                         };

@@ -55,6 +55,12 @@ impl Scene {
                 )));
             }
         }
+        if matches!(d.lattice, LatticeKind::Tri3 | LatticeKind::Hex) {
+            return Err(RenderError::BadOption(format!(
+                "drawing the {} lattice is not supported yet",
+                d.lattice
+            )));
+        }
         let two_d = d.lattice != LatticeKind::Cubic;
         let outlines = if two_d {
             d.pieces

@@ -234,6 +234,9 @@ fn check_meshes(c: &Case, opts: &PhysicalOptions) {
         LatticeKind::Cubic => (opts.cell_mm.powi(3), 1.0),
         LatticeKind::Square => (opts.cell_mm.powi(2), opts.thickness_mm),
         LatticeKind::Tri4 => (opts.cell_mm.powi(2) / 4.0, opts.thickness_mm),
+        // A triangle of side cell_mm; a hexagon whose centres are cell_mm apart.
+        LatticeKind::Tri3 => (3f64.sqrt() / 4.0 * opts.cell_mm.powi(2), opts.thickness_mm),
+        LatticeKind::Hex => (3f64.sqrt() / 2.0 * opts.cell_mm.powi(2), opts.thickness_mm),
     };
     for (i, (name, bytes)) in files.iter().enumerate() {
         assert_eq!(name, &format!("piece-{}.stl", s.label(i)));

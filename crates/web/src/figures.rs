@@ -42,8 +42,8 @@ pub fn name_of(input: &FigureInput, index: usize) -> String {
 
 /// One cell of the JSON form, checked against the lattice and the limits.
 fn cell(raw: &[i64], lattice: LatticeKind, limits: &Limits) -> Result<Cell, String> {
-    let want = if lattice == LatticeKind::Square { 2 } else { 3 };
-    let ok_len = raw.len() == want || (lattice == LatticeKind::Square && raw.len() == 3);
+    let want = lattice.cell_arity();
+    let ok_len = raw.len() == want || (want == 2 && raw.len() == 3);
     if !ok_len {
         return Err(format!(
             "cell {raw:?} should have {want} coordinates on the {lattice} lattice"
@@ -135,15 +135,7 @@ pub fn read(
 /// as the figure text format writes it: then solution cells and the
 /// downloaded figure files agree.
 pub fn normalized(figure: &Figure) -> Figure {
-    let lattice = figure.lattice();
-    let stats = figure.stats();
-    let [dx, dy, dz] = stats.min;
-    let dz = if lattice == LatticeKind::Cubic { dz } else { 0 };
-    let moved = figure
-        .cells()
-        .iter()
-        .map(|c| [c[0] - dx, c[1] - dy, c[2] - dz]);
-    Figure::new(lattice, moved).unwrap_or_else(|_| figure.clone())
+    figure.to_origin()
 }
 
 /// Reads the figures of a request and checks their number.
@@ -183,7 +175,7 @@ pub fn check_equal_areas(inputs: &[FigureInput], figures: &[Figure]) -> Result<(
 
 /// A cell in the JSON form of solution files.
 pub fn cell_json(lattice: LatticeKind, c: &Cell) -> Value {
-    if lattice == LatticeKind::Square {
+    if lattice.cell_arity() == 2 {
         json!([c[0], c[1]])
     } else {
         json!([c[0], c[1], c[2]])

@@ -529,7 +529,7 @@ async fn pictures_are_rasterized_to_the_asked_cell_count() {
             "empty",
         ),
         (
-            "lattice=hex&cells=60",
+            "lattice=octagon&cells=60",
             DISC_SVG.as_bytes(),
             StatusCode::BAD_REQUEST,
             "unknown lattice",

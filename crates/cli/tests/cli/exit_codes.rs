@@ -99,8 +99,8 @@ fn usage_errors_exit_2() {
             "--frobnicate",
         ),
         (
-            &["solve", "--lattice", "hex", "bar.txt", "ell.txt"],
-            "unknown lattice \"hex\"",
+            &["solve", "--lattice", "octagon", "bar.txt", "ell.txt"],
+            "unknown lattice \"octagon\"",
         ),
         (
             &["solve", "--time-limit", "soon", "bar.txt", "ell.txt"],

@@ -1,5 +1,5 @@
-//! The figure text format: `#`/`.` rows (square), hex digits (tri4), blocks
-//! of rows separated by one blank line (cubic).
+//! The figure text format: `#`/`.` rows (square, tri3, hex), hex digits
+//! (tri4), blocks of rows separated by one blank line (cubic).
 
 use crate::figure::{Figure, FigureError};
 use crate::lattice::{Cell, LatticeKind};
@@ -103,11 +103,11 @@ pub fn parse_figure(text: &str, lattice: LatticeKind) -> Result<Figure, ParseErr
                 y += 1;
             }
         }
-        LatticeKind::Square | LatticeKind::Tri4 => {
+        LatticeKind::Square | LatticeKind::Tri4 | LatticeKind::Tri3 | LatticeKind::Hex => {
             for (y, ln) in lines.iter().enumerate() {
                 for (x, ch) in ln.chars().enumerate() {
                     let (x, yy) = (x as i32, y as i32);
-                    if lattice == LatticeKind::Square {
+                    if lattice.plain_text() {
                         match ch {
                             '#' => cells.push([x, yy, 0]),
                             '.' => {}
@@ -160,9 +160,11 @@ pub fn parse_figure(text: &str, lattice: LatticeKind) -> Result<Figure, ParseErr
 }
 
 /// Writes a figure in the text format (the inverse of [`parse_figure`] up to
-/// translation: the figure is placed so its smallest coordinates are 0).
+/// translation: the figure is placed by [`Figure::to_origin`], so its smallest
+/// coordinates are 0, except a `tri3` figure's `x` that may start at 1).
 pub fn format_figure(figure: &Figure) -> String {
     let l = figure.lattice().lattice();
+    let figure = figure.to_origin();
     let mut min = [i32::MAX; 3];
     let mut max = [i32::MIN; 3];
     for &c in figure.cells() {
@@ -177,9 +179,9 @@ pub fn format_figure(figure: &Figure) -> String {
         if z > min[2] {
             out.push('\n');
         }
-        for y in min[1]..=max[1] {
+        for y in 0..=max[1] {
             let mut row = String::new();
-            for x in min[0]..=max[0] {
+            for x in 0..=max[0] {
                 let ch = match figure.lattice() {
                     LatticeKind::Tri4 => {
                         let mask: u32 = (0..4)
@@ -194,7 +196,7 @@ pub fn format_figure(figure: &Figure) -> String {
                                 .to_ascii_uppercase(),
                         }
                     }
-                    LatticeKind::Square => {
+                    LatticeKind::Square | LatticeKind::Tri3 | LatticeKind::Hex => {
                         if figure.contains([x, y, 0]) {
                             '#'
                         } else {

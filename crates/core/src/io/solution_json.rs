@@ -71,7 +71,7 @@ pub enum SolutionError {
     #[error("format is {0:?}, expected \"dissection-solution/1\"")]
     WrongFormat(String),
     /// Occurs when `lattice` is not a known lattice.
-    #[error("unknown lattice {0:?} (expected square, tri4 or cubic)")]
+    #[error("unknown lattice {0:?} (expected square, tri4, cubic, tri3 or hex)")]
     UnknownLattice(String),
     /// Occurs when a cell does not have the lattice's form.
     #[error("figure {figure} piece {piece}: bad cell {cell:?} for the {lattice} lattice")]
@@ -122,7 +122,7 @@ pub fn parse_solution(text: &str) -> Result<(SolutionFile, Dissection), Solution
                     cell: cell.clone(),
                     lattice,
                 };
-                let want = if lattice == LatticeKind::Square { 2 } else { 3 };
+                let want = lattice.cell_arity();
                 if cell.len() != want || cell.iter().any(|v| v.abs() > MAX_COORDINATE) {
                     return Err(bad());
                 }
@@ -156,7 +156,7 @@ impl Dissection {
     /// The file form, with `extra` keys added after the contract's keys.
     pub fn to_file(&self, extra: serde_json::Map<String, serde_json::Value>) -> SolutionFile {
         let cell_json = |c: &Cell| -> Vec<i64> {
-            if self.lattice == LatticeKind::Square {
+            if self.lattice.cell_arity() == 2 {
                 vec![c[0] as i64, c[1] as i64]
             } else {
                 c.iter().map(|v| *v as i64).collect()

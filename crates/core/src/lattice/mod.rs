@@ -8,11 +8,15 @@
 //! is written once for every lattice.
 
 mod cubic;
+mod hex;
 mod square;
+mod tri3;
 mod tri4;
 
 pub use cubic::Cubic;
+pub use hex::Hex;
 pub use square::Square;
+pub use tri3::Tri3;
 pub use tri4::Tri4;
 
 use std::fmt;
@@ -23,19 +27,45 @@ use std::str::FromStr;
 /// * `square`: `[x, y, 0]`
 /// * `tri4`: `[x, y, t]` with `t` in `0..4` (top, right, bottom, left)
 /// * `cubic`: `[x, y, z]`
+/// * `tri3`: `[x, y, 0]`, pointing up when `x + y` is even
+/// * `hex`: `[x, y, 0]`, odd rows shifted half a cell to the right
 pub type Cell = [i32; 3];
 
 /// A cell embedded as an integer point, on which symmetries act.
 pub type Point = [i32; 3];
 
-/// A point symmetry: a signed permutation matrix acting on points.
+/// A point symmetry: an integer matrix of finite order and determinant ±1
+/// acting on points (a signed permutation matrix on `square`, `tri4` and
+/// `cubic`; on `tri3` and `hex`, whose points use a skew basis, the 60°
+/// rotation is `[[0, -1], [1, 1]]`).
 ///
 /// # Validity
-/// Every row and every column has exactly one non-zero entry, which is ±1.
-/// So the matrix is orthogonal and its inverse is its transpose.
+/// The entries are integers, the determinant is ±1 (so the inverse is an
+/// integer matrix too) and some power up to the 12th is the identity (so it
+/// is a rotation or reflection in a suitable metric, never a shear); every
+/// entry lies in `-2..=2`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Symmetry {
     m: [[i32; 3]; 3],
+}
+
+type Matrix = [[i32; 3]; 3];
+
+fn mat_mul(a: &Matrix, b: &Matrix) -> Matrix {
+    let mut m = [[0; 3]; 3];
+    for (r, row) in m.iter_mut().enumerate() {
+        for (c, v) in row.iter_mut().enumerate() {
+            *v = (0..3).map(|k| a[r][k] * b[k][c]).sum();
+        }
+    }
+    m
+}
+
+fn mat_det(m: &Matrix) -> i64 {
+    let m = m.map(|r| r.map(i64::from));
+    m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
 }
 
 impl Symmetry {
@@ -44,18 +74,26 @@ impl Symmetry {
         m: [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
     };
 
-    /// A symmetry from its matrix, or `None` when it is not a signed
-    /// permutation matrix.
+    /// A symmetry from its matrix, or `None` when its determinant is not ±1
+    /// or it has no finite order (a shear, a scaling).
     pub fn new(m: [[i32; 3]; 3]) -> Option<Symmetry> {
-        for (i, row) in m.iter().enumerate() {
-            let row_ok =
-                row.iter().filter(|v| **v != 0).count() == 1 && row.iter().all(|v| v.abs() <= 1);
-            let col_ok = (0..3).filter(|&r| m[r][i] != 0).count() == 1;
-            if !row_ok || !col_ok {
+        // Entries of a finite-order unimodular 3×3 matrix are small; this
+        // also keeps the products below from overflowing.
+        if m.iter().flatten().any(|v| v.abs() > 2) || mat_det(&m).abs() != 1 {
+            return None;
+        }
+        // Finite orders of integer 3×3 matrices are 1, 2, 3, 4 and 6.
+        let mut p = m;
+        for _ in 1..12 {
+            if p == Self::IDENTITY.m {
+                return Some(Symmetry { m });
+            }
+            p = mat_mul(&p, &m);
+            if p.iter().flatten().any(|v| v.abs() > 64) {
                 return None;
             }
         }
-        Some(Symmetry { m })
+        (p == Self::IDENTITY.m).then_some(Symmetry { m })
     }
 
     /// The matrix.
@@ -87,33 +125,62 @@ impl Symmetry {
 
     /// The composition `self ∘ other` (apply `other` first).
     pub fn compose(&self, other: &Symmetry) -> Symmetry {
+        Symmetry {
+            m: mat_mul(&self.m, &other.m),
+        }
+    }
+
+    /// The inverse: the adjugate times the determinant (which is ±1).
+    pub fn inverse(&self) -> Symmetry {
+        let a = &self.m;
+        let det = self.determinant();
         let mut m = [[0; 3]; 3];
         for (r, row) in m.iter_mut().enumerate() {
             for (c, v) in row.iter_mut().enumerate() {
-                *v = (0..3).map(|k| self.m[r][k] * other.m[k][c]).sum();
+                // inverse[r][c] = cofactor[c][r] / det
+                let (r1, r2) = ((c + 1) % 3, (c + 2) % 3);
+                let (c1, c2) = ((r + 1) % 3, (r + 2) % 3);
+                *v = (a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1]) * det;
             }
         }
         Symmetry { m }
     }
 
-    /// The inverse (the transpose, since the matrix is orthogonal).
-    pub fn inverse(&self) -> Symmetry {
-        let mut m = [[0; 3]; 3];
-        for (r, row) in m.iter_mut().enumerate() {
-            for (c, v) in row.iter_mut().enumerate() {
-                *v = self.m[c][r];
-            }
-        }
-        Symmetry { m }
+    /// The largest sum of absolute values along a row: how far a point can
+    /// move away from the origin, coordinate-wise, relative to its largest
+    /// coordinate (1 for signed permutations, 2 for the skew 60° rotation).
+    pub fn spread(&self) -> i32 {
+        self.m
+            .iter()
+            .map(|r| r.iter().map(|v| v.abs()).sum::<i32>())
+            .max()
+            .unwrap_or(1)
     }
 
     /// The determinant: +1 for rotations, -1 for reflections.
     pub fn determinant(&self) -> i32 {
-        let m = &self.m;
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+        mat_det(&self.m) as i32
     }
+}
+
+/// The 12 symmetries of the triangular lattice in the skew basis
+/// `a = (1, 0)`, `b = (1/2, √3/2)` (6 rotations by multiples of 60°, the
+/// identity first, then the 6 reflections with `mirror`): `R` turns `a` into
+/// `b` and `b` into `b − a`, `M` swaps `a` and `b`. The third coordinate is
+/// left alone.
+pub(crate) fn hexagonal_symmetries(mirror: bool) -> Vec<Symmetry> {
+    let r = Symmetry::new([[0, -1, 0], [1, 1, 0], [0, 0, 1]]).expect("the 60° rotation");
+    let flip = Symmetry::new([[0, 1, 0], [1, 0, 0], [0, 0, 1]]).expect("the a/b swap");
+    let mut rots = vec![Symmetry::IDENTITY];
+    for _ in 0..5 {
+        let last = *rots.last().expect("non-empty");
+        rots.push(r.compose(&last));
+    }
+    let mut out = rots.clone();
+    if mirror {
+        out.extend(rots.iter().map(|g| g.compose(&flip)));
+    }
+    out
 }
 
 /// The lattices `dissect` knows.
@@ -125,11 +192,23 @@ pub enum LatticeKind {
     Tri4,
     /// Unit cubes, 6 face-neighbours, 24 proper rotations.
     Cubic,
+    /// Equilateral triangles in rows, alternately pointing up and down;
+    /// 3 edge-neighbours, 12 point symmetries.
+    Tri3,
+    /// Regular pointy-top hexagons in rows, odd rows shifted half a cell
+    /// right; 6 neighbours, 12 point symmetries.
+    Hex,
 }
 
 impl LatticeKind {
     /// All lattices.
-    pub const ALL: [LatticeKind; 3] = [LatticeKind::Square, LatticeKind::Tri4, LatticeKind::Cubic];
+    pub const ALL: [LatticeKind; 5] = [
+        LatticeKind::Square,
+        LatticeKind::Tri4,
+        LatticeKind::Cubic,
+        LatticeKind::Tri3,
+        LatticeKind::Hex,
+    ];
 
     /// The name used in files and on the command line.
     pub fn name(self) -> &'static str {
@@ -137,7 +216,24 @@ impl LatticeKind {
             LatticeKind::Square => "square",
             LatticeKind::Tri4 => "tri4",
             LatticeKind::Cubic => "cubic",
+            LatticeKind::Tri3 => "tri3",
+            LatticeKind::Hex => "hex",
         }
+    }
+
+    /// How many coordinates a cell has in files: 2 (`[x, y]`) on `square`,
+    /// `tri3` and `hex`, 3 on `tri4` (`[x, y, t]`) and `cubic` (`[x, y, z]`).
+    pub fn cell_arity(self) -> usize {
+        match self {
+            LatticeKind::Square | LatticeKind::Tri3 | LatticeKind::Hex => 2,
+            LatticeKind::Tri4 | LatticeKind::Cubic => 3,
+        }
+    }
+
+    /// Whether a figure file has one `#`/`.` character per cell (`square`,
+    /// `tri3`, `hex`), as opposed to hex digits (`tri4`) or layers (`cubic`).
+    pub fn plain_text(self) -> bool {
+        self.cell_arity() == 2
     }
 
     /// The lattice's geometry.
@@ -146,6 +242,8 @@ impl LatticeKind {
             LatticeKind::Square => &Square,
             LatticeKind::Tri4 => &Tri4,
             LatticeKind::Cubic => &Cubic,
+            LatticeKind::Tri3 => &Tri3,
+            LatticeKind::Hex => &Hex,
         }
     }
 }
@@ -156,9 +254,10 @@ impl fmt::Display for LatticeKind {
     }
 }
 
-/// Occurs when a lattice name is not one of `square`, `tri4`, `cubic`.
+/// Occurs when a lattice name is not one of `square`, `tri4`, `cubic`,
+/// `tri3`, `hex`.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown lattice {0:?} (expected square, tri4 or cubic)")]
+#[error("unknown lattice {0:?} (expected square, tri4, cubic, tri3 or hex)")]
 pub struct UnknownLattice(pub String);
 
 impl FromStr for LatticeKind {
@@ -207,6 +306,41 @@ pub trait Lattice: Send + Sync {
 
     /// The block (`[x, y, 0]` in 2D) a cell lies in.
     fn block(&self, cell: Cell) -> [i32; 3];
+
+    /// A lattice translation, as a point offset, that moves `cells` so that
+    /// their smallest block coordinates are as near 0 as the lattice allows
+    /// and never negative (exactly 0 on `square`, `tri4`, `cubic` and `hex`;
+    /// on `tri3`, where a translation must keep `x + y` even, `x` may start
+    /// at 1). `[0, 0, 0]` for no cells.
+    fn shift_to_origin(&self, cells: &[Cell]) -> Point {
+        let Some(first) = cells.first() else {
+            return [0; 3];
+        };
+        let mut min = self.block(*first);
+        for c in cells {
+            let b = self.block(*c);
+            for d in 0..3 {
+                min[d] = min[d].min(b[d]);
+            }
+        }
+        let m = self.modulus();
+        [-m * min[0], -m * min[1], -m * min[2]]
+    }
+}
+
+/// The cells moved by the point offset `shift` (a lattice translation).
+///
+/// # Panics
+/// When `shift` is not a translation of the lattice.
+pub fn translate_cells(l: &dyn Lattice, cells: &[Cell], shift: Point) -> Vec<Cell> {
+    cells
+        .iter()
+        .map(|c| {
+            let p = l.to_point(*c);
+            l.from_point([p[0] + shift[0], p[1] + shift[1], p[2] + shift[2]])
+                .expect("a lattice translation maps cells to cells")
+        })
+        .collect()
 }
 
 /// The 8 symmetries of the square grid acting on the x/y plane (rotations

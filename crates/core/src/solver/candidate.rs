@@ -23,7 +23,8 @@ pub(crate) struct Problem {
 impl Problem {
     /// The problem of these shapes under this geometry.
     pub(crate) fn new(shapes: Vec<Shape>, geo: Geometry) -> Problem {
-        let layout = Layout::new(&shapes, geo.dim, geo.modulus);
+        let spread = geo.syms.iter().map(|g| g.spread()).max().unwrap_or(1);
+        let layout = Layout::new(&shapes, geo.dim, geo.modulus, spread);
         let moved = shapes.iter().map(|s| s.moved(&geo.syms, &layout)).collect();
         Problem {
             shapes,

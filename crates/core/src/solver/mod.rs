@@ -8,6 +8,7 @@
 //! of threads (unless the run is stopped early).
 
 pub(crate) mod candidate;
+mod explore;
 pub(crate) mod flood_fill;
 pub(crate) mod greedy;
 pub(crate) mod levels;
@@ -26,6 +27,8 @@ use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind};
 use candidate::{Candidate, Problem, Score};
 use shape::Shape;
+
+pub use explore::{Batch, Executor, Exploration, ExplorationError, Explorer};
 
 /// The most worker threads a search may ask for.
 pub const MAX_THREADS: usize = 1024;
@@ -251,6 +254,10 @@ pub enum SolveError {
     /// Occurs when the thread pool cannot be built.
     #[error("cannot start worker threads: {0}")]
     Threads(String),
+    /// Occurs when an [`Executor`] fails or returns explorations that do
+    /// not fit the problem.
+    #[error(transparent)]
+    Executor(#[from] ExplorationError),
 }
 
 /// Checks that figures can be dissected together.
@@ -345,7 +352,22 @@ enum From<'p> {
 }
 
 /// Stream levels of the descent are kept apart from the ladder's.
-const DESCENT: usize = 1 << 20;
+pub(crate) const DESCENT: usize = 1 << 20;
+
+/// The solver form of `figures` under `options`.
+fn problem_of(figures: &[Figure], options: &Options) -> Result<Problem, SolveError> {
+    check_figures(figures)?;
+    let lattice = figures[0].lattice().lattice();
+    let mirror = options.mirror && lattice.supports_mirror();
+    Ok(Problem::new(
+        figures.iter().map(Shape::of_figure).collect(),
+        Geometry {
+            syms: lattice.symmetries(mirror),
+            dim: lattice.dim(),
+            modulus: lattice.modulus(),
+        },
+    ))
+}
 
 /// One search's fixed context.
 pub(crate) struct Search<'a> {
@@ -355,6 +377,8 @@ pub(crate) struct Search<'a> {
     stop: &'a AtomicBool,
     observer: &'a dyn Observer,
     pool: rayon::ThreadPool,
+    /// Runs the batches instead of `pool` when set.
+    executor: Option<&'a dyn Executor>,
 }
 
 impl<'a> Search<'a> {
@@ -363,18 +387,9 @@ impl<'a> Search<'a> {
         options: &'a Options,
         stop: &'a AtomicBool,
         observer: &'a dyn Observer,
+        executor: Option<&'a dyn Executor>,
     ) -> Result<Search<'a>, SolveError> {
-        check_figures(figures)?;
-        let lattice = figures[0].lattice().lattice();
-        let mirror = options.mirror && lattice.supports_mirror();
-        let problem = Problem::new(
-            figures.iter().map(Shape::of_figure).collect(),
-            Geometry {
-                syms: lattice.symmetries(mirror),
-                dim: lattice.dim(),
-                modulus: lattice.modulus(),
-            },
-        );
+        let problem = problem_of(figures, options)?;
         if options.threads > MAX_THREADS {
             return Err(SolveError::Threads(format!(
                 "{} threads asked for; at most {MAX_THREADS}",
@@ -392,6 +407,7 @@ impl<'a> Search<'a> {
             stop,
             observer,
             pool,
+            executor,
         })
     }
 
@@ -437,7 +453,7 @@ impl<'a> Search<'a> {
     /// The explorations of `level` in `round`, from `parents` (the kept
     /// candidates of the level below; unused at level 1), in batches, with
     /// the near-miss extra rounds.
-    fn level(&self, round: usize, level: usize, from: From<'_>) -> Level {
+    fn level(&self, round: usize, level: usize, from: From<'_>) -> Result<Level, SolveError> {
         let options = self.options;
         let pieces = level + 1;
         // The descent is a local step from a dissection: a quarter of a
@@ -454,23 +470,7 @@ impl<'a> Search<'a> {
         let done = AtomicUsize::new(0);
         let total = AtomicUsize::new(n);
         let best_seen = Mutex::new((f64::INFINITY, u64::MAX));
-        let run_one = |i: usize| -> (Candidate, Score) {
-            let result = match from {
-                From::Below(parents) => {
-                    let mut rng = stream(options.seed, round, level, i);
-                    if level == 1 || parents.is_empty() {
-                        levels::level_one(&self.problem, options, &mut rng, self.stop)
-                    } else {
-                        use rand::RngExt;
-                        let parent = &parents[rng.random_range(0..parents.len())].0;
-                        levels::grow(&self.problem, parent, level, options, &mut rng, self.stop)
-                    }
-                }
-                From::Above(parent) => {
-                    let mut rng = stream(options.seed, round, DESCENT + level, i);
-                    levels::merge(&self.problem, parent, level, options, &mut rng, self.stop)
-                }
-            };
+        let note = |result: &(Candidate, Score)| {
             let d = done.fetch_add(1, Ordering::Relaxed) + 1;
             let (bs, bm) = {
                 let mut g = best_seen.lock().unwrap_or_else(|e| e.into_inner());
@@ -485,7 +485,63 @@ impl<'a> Search<'a> {
                 best_score: bs,
                 best_mismatch: bm,
             });
+        };
+        let run_one = |i: usize| -> (Candidate, Score) {
+            let result = match from {
+                From::Below(parents) => explore::explore_one(
+                    &self.problem,
+                    options,
+                    round,
+                    level,
+                    i,
+                    false,
+                    parents.len(),
+                    |p| &parents[p].0,
+                    self.stop,
+                ),
+                From::Above(parent) => explore::explore_one(
+                    &self.problem,
+                    options,
+                    round,
+                    level,
+                    i,
+                    true,
+                    1,
+                    |_| parent,
+                    self.stop,
+                ),
+            };
+            note(&result);
             result
+        };
+        // What an executor gets as parents (made once per level, only for one).
+        let (parents, descent): (Vec<Exploration>, bool) = match (self.executor, from) {
+            (None, _) => (Vec::new(), false),
+            (Some(_), From::Below(parents)) => (
+                parents
+                    .iter()
+                    .map(|(candidate, score)| Exploration {
+                        candidate: candidate.clone(),
+                        score: *score,
+                    })
+                    .collect(),
+                false,
+            ),
+            // The descent's parent is a dissection; explorations read only
+            // a parent's labels, never its score.
+            (Some(_), From::Above(parent)) => (
+                vec![Exploration {
+                    candidate: parent.clone(),
+                    score: Score {
+                        value: 0.0,
+                        mismatch: 0,
+                        split: 0,
+                        valid: true,
+                        variance: 0.0,
+                    },
+                }],
+                true,
+            ),
         };
         let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(n);
         let batch = options.batch.max(1);
@@ -495,9 +551,36 @@ impl<'a> Search<'a> {
         let mut stopped = false;
         while start < planned {
             let end = (start + batch).min(planned);
-            let chunk: Vec<(Candidate, Score)> = self
-                .pool
-                .install(|| (start..end).into_par_iter().map(run_one).collect());
+            let chunk: Vec<(Candidate, Score)> = match self.executor {
+                None => self
+                    .pool
+                    .install(|| (start..end).into_par_iter().map(run_one).collect()),
+                Some(ex) => {
+                    let batch = Batch {
+                        round,
+                        level,
+                        descent,
+                        indices: start..end,
+                        parents: &parents,
+                    };
+                    let got = ex.run(&batch).map_err(ExplorationError::Executor)?;
+                    if got.len() != end - start {
+                        return Err(ExplorationError::Count {
+                            got: got.len(),
+                            want: end - start,
+                        }
+                        .into());
+                    }
+                    let mut chunk = Vec::with_capacity(got.len());
+                    for e in got {
+                        e.check(&self.problem)?;
+                        let result = (e.candidate, e.score);
+                        note(&result);
+                        chunk.push(result);
+                    }
+                    chunk
+                }
+            };
             results.extend(chunk);
             start = end;
             if self.stopped() {
@@ -535,7 +618,7 @@ impl<'a> Search<'a> {
             best_mismatch: level_result.best_mismatch(),
             found: level_result.results.iter().any(|(_, s)| s.valid),
         });
-        level_result
+        Ok(level_result)
     }
 
     /// Hands the near misses of a level (smallest `E_M` first, at most
@@ -630,7 +713,20 @@ pub fn solve(
     stop: &AtomicBool,
     observer: &dyn Observer,
 ) -> Result<Outcome, SolveError> {
-    let search = Search::new(figures, options, stop, observer)?;
+    solve_with(figures, options, stop, observer, None)
+}
+
+/// [`solve`], with the explorations run by `executor` (`None`: the
+/// solver's thread pool). An executor that returns what
+/// [`Explorer::explore`] returns gives the same answer as [`solve`].
+pub fn solve_with(
+    figures: &[Figure],
+    options: &Options,
+    stop: &AtomicBool,
+    observer: &dyn Observer,
+    executor: Option<&dyn Executor>,
+) -> Result<Outcome, SolveError> {
+    let search = Search::new(figures, options, stop, observer, executor)?;
     let (whole, s0) = search.level_zero();
     if s0.valid {
         observer.on_event(&Event::Improved {
@@ -664,7 +760,7 @@ pub fn solve(
         if pieces > max_pieces || search.stopped() {
             break;
         }
-        let result = search.level(0, level, From::Below(&parents));
+        let result = search.level(0, level, From::Below(&parents))?;
         outcome.explorations += result.results.len();
         outcome.last_pieces = pieces;
         outcome.best_mismatch = Some(result.best_mismatch());
@@ -737,7 +833,22 @@ pub fn solve_anytime(
     observer: &dyn Observer,
     repair: Option<&dyn Repair>,
 ) -> Result<Outcome, SolveError> {
-    let search = Search::new(figures, options, stop, observer)?;
+    solve_anytime_with(figures, options, anytime, stop, observer, repair, None)
+}
+
+/// [`solve_anytime`], with the explorations run by `executor` (`None`: the
+/// solver's thread pool); the same answer when it returns what
+/// [`Explorer::explore`] returns.
+pub fn solve_anytime_with(
+    figures: &[Figure],
+    options: &Options,
+    anytime: &Anytime,
+    stop: &AtomicBool,
+    observer: &dyn Observer,
+    repair: Option<&dyn Repair>,
+    executor: Option<&dyn Executor>,
+) -> Result<Outcome, SolveError> {
+    let search = Search::new(figures, options, stop, observer, executor)?;
     let (whole, s0) = search.level_zero();
     if s0.valid {
         let found = search.found(&whole, &s0, 0);
@@ -835,7 +946,7 @@ pub fn solve_anytime(
                 break;
             }
             let level = pieces - 1;
-            let result = search.level(round, level, From::Above(&parent));
+            let result = search.level(round, level, From::Above(&parent))?;
             outcome.explorations += result.results.len();
             let mut step = result
                 .best_valid()
@@ -867,7 +978,7 @@ pub fn solve_anytime(
                 break;
             }
             let pieces = level + 1;
-            let result = search.level(round, level, From::Below(&parents));
+            let result = search.level(round, level, From::Below(&parents))?;
             outcome.explorations += result.results.len();
             outcome.last_pieces = outcome.last_pieces.max(pieces);
             outcome.best_mismatch = Some(result.best_mismatch());

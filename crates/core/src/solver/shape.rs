@@ -210,8 +210,10 @@ impl Drop for LabelGrid<'_> {
 
 impl Layout {
     /// The layout for these shapes; translations are multiples of `modulus`
-    /// in the first `dim` coordinates.
-    pub(crate) fn new(shapes: &[Shape], dim: usize, modulus: i32) -> Layout {
+    /// in the first `dim` coordinates, and no symmetry moves a coordinate
+    /// by more than `spread` times the largest coordinate of a point (1 for
+    /// signed permutations, 2 for the skew 60° rotation of `tri3`/`hex`).
+    pub(crate) fn new(shapes: &[Shape], dim: usize, modulus: i32, spread: i32) -> Layout {
         let boxes: Vec<(Point, Point)> = shapes.iter().map(|s| s.point_box()).collect();
         let mut ext = [0i64; 3];
         for (lo, hi) in &boxes {
@@ -220,9 +222,11 @@ impl Layout {
             }
         }
         // Rotations mix the translated axes, so each of them gets room for
-        // the largest extent of any axis, plus the rounding of the
-        // centroid offset; axes that translations never move need none.
-        let reach = ext[..dim].iter().copied().max().unwrap_or(0) + modulus as i64 + 2;
+        // the largest extent of any axis (times the spread: a skew rotation
+        // adds two coordinates), plus the rounding of the centroid offset;
+        // axes that translations never move need none.
+        let reach =
+            ext[..dim].iter().copied().max().unwrap_or(0) * spread as i64 + modulus as i64 + 2;
         let pad: Vec<i64> = (0..3).map(|d| if d < dim { reach } else { 0 }).collect();
         let mut size = [1i64; 3];
         for (lo, hi) in &boxes {

@@ -11,7 +11,9 @@ use crate::distance::Geometry;
 use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind, Point};
 
-use super::util::{candidate, candidate_of, matching, piece_points, rng, Cubic, Square, Tri4};
+use super::util::{
+    candidate, candidate_of, matching, piece_points, rng, Cubic, Hex, Square, Tri3, Tri4,
+};
 
 /// `D` between the single pieces written (with letter `A`) by `a` and `b`.
 fn check(lattice: LatticeKind, mirror: bool, a: &str, b: &str, expected: u32) {
@@ -184,6 +186,42 @@ fn hand_checked_values() {
     check(Cubic, false, "AA", "A", 1);
 }
 
+/// `tri3` and `hex`: pieces turned by 60° (an up triangle then becomes a
+/// down one), mirrored, or moved by an odd number of rows are congruent; a
+/// lone up triangle is never a down triangle moved.
+#[test]
+fn zero_for_congruent_tri3_and_hex_pieces() {
+    for mirror in [true, false] {
+        // One triangle, up or down, anywhere.
+        check(Tri3, mirror, "A", ".A", 0);
+        check(Tri3, mirror, "A", ".|A", 0);
+        // A rhombus of two triangles in its three orientations.
+        check(Tri3, mirror, "AA", ".AA", 0);
+        check(Tri3, mirror, "AA", "A|A", 0);
+        check(Tri3, mirror, "A|A", ".AA", 0);
+        // The hexagon of six triangles, a row lower (x + y stays even).
+        check(Tri3, mirror, "AAA|AAA", ".|.AAA|.AAA", 0);
+        // An hourglass of two trapezoids, turned by 60°.
+        check(Tri3, mirror, ".AAA|.AAA", "..A|AAAA|.A", 0);
+        // A trapezoid of three, upside down.
+        check(Tri3, mirror, "AAA", ".AAA", 0);
+        // Hexagons: a bar of three in its three directions, across odd rows.
+        check(Hex, mirror, "AAA", "A|A|.A", 0);
+        check(Hex, mirror, "AAA", ".|A|.A|.A", 0);
+        check(Hex, mirror, "AA|A", ".A|AA", 0);
+        check(Hex, mirror, "AA|.A", ".|AA|A", 0);
+    }
+    // A chiral pentiamond and a chiral tetrahex meet their mirror images
+    // only with mirror.
+    check(Tri3, true, "AAAA|A", "AA|AA|.A", 0);
+    assert!(dist(Tri3, false, "AAAA|A", "AA|AA|.A") > 0);
+    check(Hex, true, "AAA|A", "AAA|.A", 0);
+    assert!(dist(Hex, false, "AAA|A", "AAA|.A") > 0);
+    // Different pieces are at a positive distance.
+    check(Tri3, true, "AA", "A", 1);
+    check(Hex, true, "AAA", "AA|A", 2);
+}
+
 /// `D` between the pieces made of cells `a` and `b` (each its own figure)
 /// is the one of the definition.
 fn check_definition(lattice: LatticeKind, mirror: bool, a: &[Cell], b: &[Cell]) {
@@ -240,7 +278,7 @@ fn distance_follows_its_definition_on_random_pieces() {
                 let start = match lattice {
                     Tri4 => [offset[0], offset[1], r.random_range(0..4)],
                     Cubic => [offset[0], offset[1], r.random_range(-3..3)],
-                    Square => offset,
+                    Square | Tri3 | Hex => offset,
                 };
                 let a = random_piece(lattice, [0, 0, 0], 7, &mut r);
                 let b = random_piece(lattice, start, 7, &mut r);
@@ -273,6 +311,14 @@ fn transforms_reach_the_distance() {
         (Cubic, "AAA", "A/A/A"),
         (Cubic, "AA|.A/..|.A", "A.|A./..|AA"),
         (Cubic, "AA|AA/AA|AA", "AA|AA"),
+        (Tri3, "AA", "A|A"),
+        (Tri3, "AAA|AAA", ".|.AAA|.AAA"),
+        (Tri3, ".AAA|.AAA", "..A|AAAA|.A"),
+        (Tri3, "AAAA|A", "AA|AA|.A"),
+        (Tri3, "AAAA", "A"),
+        (Hex, "AAA", "A|A|.A"),
+        (Hex, "AAA|A", "AAA|.A"),
+        (Hex, "A", "AAA|AAA"),
     ];
     for &(lattice, a, b) in cases {
         for mirror in [true, false] {

@@ -20,7 +20,7 @@ use crate::piece::{Pieces, UNSET};
 use crate::solver::candidate::{Candidate, Problem};
 use crate::solver::shape::Shape;
 
-pub(crate) use LatticeKind::{Cubic, Square, Tri4};
+pub(crate) use LatticeKind::{Cubic, Hex, Square, Tri3, Tri4};
 
 /// The cells of a labelled string with their labels (`UNSET` for `?`).
 pub(crate) fn labelled_cells(lattice: LatticeKind, compact: &str) -> Vec<(Cell, u16)> {

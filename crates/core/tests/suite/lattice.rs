@@ -6,7 +6,7 @@ use std::collections::HashSet;
 use dissect_core::lattice::{Point, Symmetry};
 use dissect_core::{Cell, Lattice, LatticeKind};
 
-use super::util::{cells_around, Cubic, Square, Tri4};
+use super::util::{cells_around, Cubic, Hex, Square, Tri3, Tri4};
 
 /// What each lattice must be.
 struct Expect {
@@ -44,7 +44,102 @@ fn expect(kind: LatticeKind) -> Expect {
             group_no_mirror: 24,
             mirror: false,
         },
+        Tri3 => Expect {
+            dim: 2,
+            degree: 3,
+            cells_per_block: 1,
+            group: 12,
+            group_no_mirror: 6,
+            mirror: true,
+        },
+        Hex => Expect {
+            dim: 2,
+            degree: 6,
+            cells_per_block: 1,
+            group: 12,
+            group_no_mirror: 6,
+            mirror: true,
+        },
     }
+}
+
+/// The corners of a 2D cell in the plane (y down), written from
+/// `shared/FORMAT.md` alone, independently of the lattice code: a square
+/// `(x, y)`; a `tri4` triangle (two square corners and the centre); a `tri3`
+/// triangle (`h = √3/2`, apex `((x+1)/2, y·h)` when up, lower vertex
+/// `((x+1)/2, (y+1)·h)` when down); a `hex` hexagon around its centre
+/// `(x + (y mod 2)/2, y·h)` at circumradius `1/√3`.
+fn corners(kind: LatticeKind, [x, y, t]: Cell) -> Vec<[f64; 2]> {
+    let (xf, yf) = (x as f64, y as f64);
+    let h = 3f64.sqrt() / 2.0;
+    match kind {
+        Square => vec![
+            [xf, yf],
+            [xf + 1.0, yf],
+            [xf + 1.0, yf + 1.0],
+            [xf, yf + 1.0],
+        ],
+        Tri4 => {
+            let sq = [
+                [xf, yf],
+                [xf + 1.0, yf],
+                [xf + 1.0, yf + 1.0],
+                [xf, yf + 1.0],
+            ];
+            let t = t as usize;
+            vec![sq[t], sq[(t + 1) % 4], [xf + 0.5, yf + 0.5]]
+        }
+        Tri3 => {
+            let mid = (xf + 1.0) / 2.0;
+            if (x + y).rem_euclid(2) == 0 {
+                vec![
+                    [mid, yf * h],
+                    [mid + 0.5, (yf + 1.0) * h],
+                    [mid - 0.5, (yf + 1.0) * h],
+                ]
+            } else {
+                vec![
+                    [mid - 0.5, yf * h],
+                    [mid + 0.5, yf * h],
+                    [mid, (yf + 1.0) * h],
+                ]
+            }
+        }
+        Hex => {
+            let c = [xf + y.rem_euclid(2) as f64 / 2.0, yf * h];
+            let r = 1.0 / 3f64.sqrt();
+            (0..6)
+                .map(|k| {
+                    let a = std::f64::consts::PI / 6.0 + k as f64 * std::f64::consts::PI / 3.0;
+                    [c[0] + r * a.cos(), c[1] + r * a.sin()]
+                })
+                .collect()
+        }
+        Cubic => unreachable!("2D lattices only"),
+    }
+}
+
+/// Whether two cells share an edge, from their corners: two common corners.
+fn share_an_edge(kind: LatticeKind, a: Cell, b: Cell) -> bool {
+    let (ca, cb) = (corners(kind, a), corners(kind, b));
+    let common = ca
+        .iter()
+        .filter(|p| {
+            cb.iter()
+                .any(|q| (p[0] - q[0]).abs() < 1e-9 && (p[1] - q[1]).abs() < 1e-9)
+        })
+        .count();
+    common >= 2
+}
+
+/// The centre of mass of a 2D cell's corners.
+fn centre(kind: LatticeKind, cell: Cell) -> [f64; 2] {
+    let c = corners(kind, cell);
+    let n = c.len() as f64;
+    [
+        c.iter().map(|p| p[0]).sum::<f64>() / n,
+        c.iter().map(|p| p[1]).sum::<f64>() / n,
+    ]
 }
 
 /// Runs `test` for every lattice, naming the lattice when it fails.
@@ -80,7 +175,7 @@ fn identity_of_each_lattice() {
     });
     assert_eq!(
         LatticeKind::ALL.map(|k| k.name()),
-        ["square", "tri4", "cubic"]
+        ["square", "tri4", "cubic", "tri3", "hex"]
     );
     let err = "hexagonal".parse::<LatticeKind>().unwrap_err();
     assert!(err.to_string().contains("\"hexagonal\""), "{err}");
@@ -116,6 +211,10 @@ fn is_cell_and_blocks() {
                 assert_eq!(l.block([3, -2, 2]), [3, -2, 0]);
             }
             Cubic => assert!(l.is_cell([5, -7, 9])),
+            Tri3 | Hex => {
+                assert!(!l.is_cell([0, 0, 1]));
+                assert_eq!(l.block([3, -2, 0]), [3, -2, 0]);
+            }
         }
     });
 }
@@ -135,6 +234,71 @@ fn neighbours_are_symmetric_and_of_the_right_degree() {
             }
         }
     });
+}
+
+/// On every 2D lattice the neighbours are exactly the cells that share an
+/// edge in the plane (the geometry of `FORMAT.md`, computed here on its own).
+#[test]
+fn neighbours_match_the_geometry() {
+    for_every_lattice(|kind, l, e| {
+        if e.dim == 3 {
+            return;
+        }
+        let all = cells_around(kind, 3);
+        for c in cells_around(kind, 2) {
+            let mut want: Vec<Cell> = all
+                .iter()
+                .copied()
+                .filter(|&d| d != c && share_an_edge(kind, c, d))
+                .collect();
+            let mut got = l.neighbors(c);
+            want.sort();
+            got.sort();
+            assert_eq!(got, want, "neighbours of {c:?}");
+        }
+    });
+}
+
+#[test]
+fn tri3_and_hex_adjacency_follows_the_format() {
+    let sorted = |mut v: Vec<Cell>| {
+        v.sort();
+        v
+    };
+    let t = Tri3.lattice();
+    // Up when x + y is even: across the base, the triangle below.
+    assert_eq!(
+        sorted(t.neighbors([0, 0, 0])),
+        sorted(vec![[-1, 0, 0], [1, 0, 0], [0, 1, 0]])
+    );
+    assert_eq!(
+        sorted(t.neighbors([1, 0, 0])),
+        sorted(vec![[0, 0, 0], [2, 0, 0], [1, -1, 0]])
+    );
+    let h = Hex.lattice();
+    // Even rows: columns x - 1 and x above and below; odd rows: x and x + 1.
+    assert_eq!(
+        sorted(h.neighbors([2, 2, 0])),
+        sorted(vec![
+            [1, 2, 0],
+            [3, 2, 0],
+            [1, 1, 0],
+            [2, 1, 0],
+            [1, 3, 0],
+            [2, 3, 0]
+        ])
+    );
+    assert_eq!(
+        sorted(h.neighbors([2, 1, 0])),
+        sorted(vec![
+            [1, 1, 0],
+            [3, 1, 0],
+            [2, 0, 0],
+            [3, 0, 0],
+            [2, 2, 0],
+            [3, 2, 0]
+        ])
+    );
 }
 
 #[test]
@@ -198,10 +362,28 @@ fn translations_map_cells_to_cells_and_keep_adjacency() {
             if e.dim == 2 && s[2] != 0 {
                 continue;
             }
+            // The same step moves every cell the same way in the plane.
+            let mut shift: Option<[f64; 2]> = None;
             for c in cells_around(l.kind(), 1) {
                 let moved = l.from_point(translate(l, l.to_point(c), s));
                 let moved = moved.unwrap_or_else(|| panic!("{c:?} + {s:?}"));
-                assert_eq!(l.block(moved)[0], l.block(c)[0] + s[0]);
+                if e.dim == 2 {
+                    let (a, b) = (centre(l.kind(), c), centre(l.kind(), moved));
+                    let d = [b[0] - a[0], b[1] - a[1]];
+                    let first = *shift.get_or_insert(d);
+                    assert!(
+                        (d[0] - first[0]).abs() < 1e-9 && (d[1] - first[1]).abs() < 1e-9,
+                        "{c:?} + {s:?} moves by {d:?}, others by {first:?}"
+                    );
+                    // A translation keeps the cell's shape and orientation.
+                    let (ca, cb) = (corners(l.kind(), c), corners(l.kind(), moved));
+                    for (p, q) in ca.iter().zip(&cb) {
+                        assert!((q[0] - p[0] - d[0]).abs() < 1e-9, "{c:?} -> {moved:?}");
+                        assert!((q[1] - p[1] - d[1]).abs() < 1e-9, "{c:?} -> {moved:?}");
+                    }
+                } else {
+                    assert_eq!(l.block(moved), [c[0] + s[0], c[1] + s[1], c[2] + s[2]]);
+                }
                 for n in l.neighbors(c) {
                     let mn = l.from_point(translate(l, l.to_point(n), s)).unwrap();
                     assert!(l.neighbors(moved).contains(&mn));
@@ -232,6 +414,58 @@ fn symmetries_map_the_lattice_onto_itself() {
             }
         }
     });
+}
+
+/// In the plane every symmetry is a rigid motion: it keeps the distance
+/// between any two cell centres.
+#[test]
+fn symmetries_are_rigid_motions_of_the_plane() {
+    for_every_lattice(|kind, l, e| {
+        if e.dim == 3 {
+            return;
+        }
+        let cells = cells_around(kind, 2);
+        let dist =
+            |a: [f64; 2], b: [f64; 2]| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt();
+        for g in l.symmetries(true) {
+            let image = |c: Cell| {
+                l.from_point(g.apply(l.to_point(c)))
+                    .expect("onto the lattice")
+            };
+            for &a in cells.iter().step_by(3) {
+                for &b in cells.iter().step_by(5) {
+                    let before = dist(centre(kind, a), centre(kind, b));
+                    let after = dist(centre(kind, image(a)), centre(kind, image(b)));
+                    assert!((before - after).abs() < 1e-9, "{g:?} on {a:?}, {b:?}");
+                }
+            }
+        }
+    });
+}
+
+/// `tri3`: translations keep up triangles up (the point residues differ),
+/// while the turns by odd multiples of 60° swap up and down.
+#[test]
+fn tri3_translations_keep_triangles_pointing_the_same_way() {
+    let l = Tri3.lattice();
+    let up = |c: Cell| (c[0] + c[1]).rem_euclid(2) == 0;
+    for c in cells_around(Tri3, 2) {
+        let p = l.to_point(c);
+        for t in [[1, 0, 0], [0, 1, 0], [2, 1, 0], [1, 2, 0]] {
+            // Only multiples of the modulus are translations.
+            assert_eq!(
+                l.from_point([p[0] + t[0], p[1] + t[1], 0]),
+                None,
+                "{c:?} + {t:?}"
+            );
+            let moved = l.from_point([p[0] + 3 * t[0], p[1] + 3 * t[1], 0]).unwrap();
+            assert_eq!(up(moved), up(c));
+        }
+        for (k, g) in l.symmetries(false).iter().enumerate() {
+            let image = l.from_point(g.apply(p)).unwrap();
+            assert_eq!(up(image) == up(c), k % 2 == 0, "turn {k} of {c:?}");
+        }
+    }
 }
 
 #[test]
@@ -292,15 +526,35 @@ fn symmetry_algebra() {
 }
 
 #[test]
-fn only_signed_permutations_are_symmetries() {
+fn only_unimodular_matrices_of_finite_order_are_symmetries() {
     for m in [
         [[0, 0, 0], [0, 1, 0], [0, 0, 1]],
         [[2, 0, 0], [0, 1, 0], [0, 0, 1]],
+        // A shear: determinant 1 but no finite order.
         [[1, 1, 0], [0, 1, 0], [0, 0, 1]],
+        [[2, 1, 0], [1, 1, 0], [0, 0, 1]],
         [[1, 0, 0], [1, 0, 0], [0, 0, 1]],
         [[1, 0, 0], [0, 0, 1], [0, 0, 1]],
+        [[9, 0, 0], [0, 1, 0], [0, 0, 1]],
     ] {
         assert_eq!(Symmetry::new(m), None, "{m:?}");
     }
     assert!(Symmetry::new([[0, 0, -1], [1, 0, 0], [0, -1, 0]]).is_some());
+    // The 60° turn of the skew basis of tri3 and hex: order 6.
+    let turn = Symmetry::new([[0, -1, 0], [1, 1, 0], [0, 0, 1]]).expect("60° turn");
+    let mut p = turn;
+    for _ in 1..6 {
+        assert_ne!(p, Symmetry::IDENTITY);
+        p = p.compose(&turn);
+    }
+    assert_eq!(p, Symmetry::IDENTITY);
+    assert_eq!(
+        turn.inverse(),
+        turn.compose(&turn)
+            .compose(&turn)
+            .compose(&turn)
+            .compose(&turn)
+    );
+    assert_eq!(turn.inverse().matrix(), [[1, 1, 0], [-1, 0, 0], [0, 0, 1]]);
+    assert_eq!(turn.spread(), 2);
 }

@@ -2,6 +2,7 @@
 
 mod anytime;
 mod ascii_art;
+mod explore;
 mod lattice;
 mod parse;
 mod solution_json;

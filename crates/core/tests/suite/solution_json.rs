@@ -97,8 +97,8 @@ fn errors() {
         Err(SolutionError::WrongFormat("dissection-solution/2".into()))
     );
     assert_eq!(
-        parse_solution(r#"{"lattice": "hex", "figures": []}"#),
-        Err(SolutionError::UnknownLattice("hex".into()))
+        parse_solution(r#"{"lattice": "hexagonal", "figures": []}"#),
+        Err(SolutionError::UnknownLattice("hexagonal".into()))
     );
     let bad_cell = |text: &str, figure, piece, cell: Vec<i64>, lattice| {
         assert_eq!(

@@ -12,7 +12,7 @@
 use dissect_core::io::{parse_figure, Dissection};
 use dissect_core::{Cell, Figure, LatticeKind};
 
-pub use LatticeKind::{Cubic, Square, Tri4};
+pub use LatticeKind::{Cubic, Hex, Square, Tri3, Tri4};
 
 /// The file text of a compact figure string.
 pub fn text(compact: &str) -> String {

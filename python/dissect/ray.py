@@ -1,0 +1,170 @@
+"""``dissect`` on a Ray cluster (``pip install ./python[ray]``).
+
+* ``solve_many(problems, **options)``: many independent problems as Ray
+  tasks on whatever cluster ``ray.init()`` connected to (locally: all
+  cores); results in the order of ``problems``.
+* ``solve(figures, ...)``: one search whose explorations are spread over
+  the cluster's workers; the same answer as ``dissect.solve`` for the same
+  seed when no time limit stops it.
+
+Every worker needs the ``dissect`` package installed (on a local cluster it
+shares the driver's environment).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Dict, List, Optional, Sequence, Union
+
+try:
+    import ray
+except ImportError as e:  # pragma: no cover - depends on the environment
+    raise ImportError(
+        "dissect.ray needs Ray: pip install './python[ray]' (or pip install ray)"
+    ) from e
+
+import dissect
+from dissect import Dissection, Figure
+
+__all__ = ["solve_many", "solve"]
+
+from dissect import _dissect
+
+Problem = Union[Sequence[Figure], Dict[str, Any]]
+
+
+@ray.remote
+def _solve_task(figures: List[Figure], options: Dict[str, Any]) -> Dissection:
+    return dissect.solve(figures, **options)
+
+
+def _split(problem: Problem, options: Dict[str, Any]):
+    if isinstance(problem, dict):
+        problem = dict(problem)
+        try:
+            figures = problem.pop("figures")
+        except KeyError:
+            raise dissect.ProblemError("a problem given as a dict needs a 'figures' key") from None
+        return list(figures), {**options, **problem}
+    return list(problem), dict(options)
+
+
+def solve_many(
+    problems: Sequence[Problem],
+    return_exceptions: bool = False,
+    **options: Any,
+) -> List[Union[Dissection, Exception]]:
+    """Solves every problem as its own Ray task; returns the dissections in
+    the order of ``problems``.
+
+    A problem is a list of figures, or a dict with ``figures`` and options
+    that override ``options`` for that problem (e.g. ``{"figures": [a, b],
+    "seed": 7}``). ``options`` are ``dissect.solve``'s. Each task asks Ray
+    for ``threads`` CPUs and runs the solver with that many threads
+    (default 1: one problem per core). With ``return_exceptions=True`` a
+    problem that fails (``NoDissectionFound``, ``ProblemError``, ...) gets
+    its exception in the list; otherwise the first failure is raised.
+    """
+    options.setdefault("threads", 1)
+    refs = []
+    for p in problems:
+        figures, opts = _split(p, options)
+        figures = dissect._figures(figures)  # bad input fails here, not on a worker
+        cpus = max(1, int(opts.get("threads") or 1))
+        refs.append(_solve_task.options(num_cpus=cpus).remote(figures, opts))
+    out: List[Union[Dissection, Exception]] = []
+    for ref in refs:
+        try:
+            out.append(ray.get(ref))
+        except ray.exceptions.RayTaskError as e:
+            cause = e.as_instanceof_cause()
+            if not return_exceptions:
+                for r in refs:
+                    ray.cancel(r)
+                raise cause from None
+            out.append(cause)
+    return out
+
+
+# One Explorer per problem per worker process: building it (shapes, layout,
+# moved point sets) costs more than an exploration of a small figure.
+_explorers: Dict[bytes, Any] = {}
+
+
+@ray.remote
+def _explore_task(key: bytes, problem, round_: int, level: int, indices: List[int], parents: List[bytes]):
+    explorer = _explorers.get(key)
+    if explorer is None:
+        figures, seed, options = problem
+        explorer = _dissect.Explorer(figures, seed=seed, **options)
+        _explorers.clear()
+        _explorers[key] = explorer
+    return explorer.explore(round_, level, indices, parents)
+
+
+class _RayExecutor:
+    """Sends each batch of explorations to Ray as ``tasks`` tasks of
+    consecutive indices and returns their results in index order."""
+
+    def __init__(self, figures, seed, options, tasks):
+        import hashlib
+        import pickle
+
+        problem = (figures, seed, options)
+        self.key = hashlib.sha256(pickle.dumps(problem)).digest()
+        self.problem = ray.put(problem)
+        self.tasks = tasks
+        self._parents = (None, None)
+        self.batches = 0
+
+    def __call__(self, round_, level, start, end, parents):
+        # The parents are the same for every batch of a level: put them once.
+        if self._parents[0] != (round_, level):
+            self._parents = ((round_, level), ray.put(parents))
+        parents_ref = self._parents[1]
+        indices = list(range(start, end))
+        n = max(1, min(self.tasks, len(indices)))
+        chunks = [indices[i * len(indices) // n:(i + 1) * len(indices) // n] for i in range(n)]
+        refs = [
+            _explore_task.remote(self.key, self.problem, round_, level, c, parents_ref)
+            for c in chunks
+        ]
+        self.batches += 1
+        out: List[bytes] = []
+        for part in ray.get(refs):
+            out.extend(part)
+        return out
+
+
+def solve(
+    figures: Sequence[Figure],
+    seed: int = 1,
+    time_limit: Optional[float] = None,
+    tasks: Optional[int] = None,
+    **options: Any,
+) -> Dissection:
+    """``dissect.solve`` with the search's explorations spread over the Ray
+    cluster: every batch of explorations is cut into ``tasks`` Ray tasks
+    (default: the cluster's CPU count) of consecutive explorations. The
+    level loop runs here and gets the results back in index order, so the
+    answer is the same as ``dissect.solve``'s for the same seed and options
+    when no time limit (or Ctrl-C) stops the search. Worth it when
+    explorations are expensive (large figures, many explorations, many
+    machines); on small figures Ray's per-batch overhead dominates (see
+    BENCHMARKS.md).
+    """
+    figures = dissect._figures(figures)
+    if tasks is None:
+        tasks = max(1, int(ray.cluster_resources().get("CPU", 1)))
+    if tasks < 1:
+        raise dissect.OptionError(f"tasks must be at least 1, got {tasks}")
+    options.pop("threads", None)  # the workers run one exploration at a time
+    # Checks the options here, with the problem, before anything is sent.
+    _dissect.Explorer(figures, seed=seed, **options)
+    executor = _RayExecutor(figures, seed, options, tasks)
+    result = _dissect.solve(
+        figures, seed=seed, time_limit=time_limit, threads=1, executor=executor, **options
+    )
+    d = Dissection(figures, result)
+    d.ray_tasks = tasks  #: Ray tasks per batch
+    d.ray_batches = executor.batches  #: batches sent to Ray
+    return d

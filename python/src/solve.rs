@@ -1,0 +1,528 @@
+//! `solve`, `bound`, `verify` and the solution JSON writer.
+
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
+use std::time::Instant;
+
+use dissect_core::io::{parse_solution, Dissection};
+use dissect_core::solver::{self, Batch, Event, Executor, Exploration, Observer, Options};
+use dissect_core::{Figure, LatticeKind};
+use dissect_exact::{ExactOptions, Mode};
+use pyo3::prelude::*;
+use pyo3::types::{PyBytes, PyDict, PyList};
+
+use crate::errors::{error, Kind};
+use crate::figure::{cells_to_py, PyFigure};
+use crate::run::{deadline, watched};
+
+/// The solver options `solve` takes as keywords (the CLI's flags).
+const OPTION_NAMES: [&str; 11] = [
+    "mirror",
+    "max_pieces",
+    "area_weight",
+    "explorations",
+    "keep",
+    "iterations",
+    "split_penalty",
+    "split_tries",
+    "full_level",
+    "extra_rounds",
+    "patience",
+];
+
+/// The names of the options `solve` accepts besides seed, time_limit and threads.
+#[pyfunction]
+pub(crate) fn option_names() -> Vec<&'static str> {
+    OPTION_NAMES.to_vec()
+}
+
+/// The figures of a call: the core's figures and their names (a figure's
+/// own name, or `figure-N`), after the checks `dissect solve` makes.
+pub(crate) fn problem(
+    py: Python<'_>,
+    figures: &[PyRef<'_, PyFigure>],
+) -> PyResult<(Vec<Figure>, Vec<String>)> {
+    let names: Vec<String> = figures
+        .iter()
+        .enumerate()
+        .map(|(i, f)| {
+            f.name
+                .clone()
+                .unwrap_or_else(|| format!("figure-{}", i + 1))
+        })
+        .collect();
+    let figs: Vec<Figure> = figures.iter().map(|f| f.figure.clone()).collect();
+    if figs.len() < 2 {
+        return Err(error(
+            py,
+            Kind::Problem,
+            format!("need at least two figures, got {}", figs.len()),
+        ));
+    }
+    if let Some((i, f)) = figs
+        .iter()
+        .enumerate()
+        .find(|(_, f)| f.lattice() != figs[0].lattice())
+    {
+        return Err(error(
+            py,
+            Kind::Problem,
+            format!(
+                "figures are on different lattices: {} is {}, {} is {}",
+                names[0],
+                figs[0].lattice(),
+                names[i],
+                f.lattice()
+            ),
+        ));
+    }
+    if figs.iter().any(|f| f.len() != figs[0].len()) {
+        let counts: Vec<String> = names
+            .iter()
+            .zip(&figs)
+            .map(|(n, f)| format!("{n} has {} cells", f.len()))
+            .collect();
+        return Err(error(
+            py,
+            Kind::Problem,
+            format!("figures have different areas: {}", counts.join(", ")),
+        ));
+    }
+    solver::check_figures(&figs).map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+    Ok((figs, names))
+}
+
+/// Solver options from keywords, checked as `dissect solve` checks its flags.
+pub(crate) fn options(
+    py: Python<'_>,
+    lattice: LatticeKind,
+    seed: u64,
+    threads: usize,
+    kwargs: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Options> {
+    let bad = |m: String| error(py, Kind::Option, m);
+    if threads > 256 {
+        return Err(bad(format!(
+            "threads={threads} is too many (at most 256; 0 means one per core)"
+        )));
+    }
+    let mut o = Options {
+        seed,
+        threads,
+        mirror: lattice.lattice().supports_mirror(),
+        ..Options::default()
+    };
+    let Some(kwargs) = kwargs else {
+        return Ok(o);
+    };
+    for (key, value) in kwargs.iter() {
+        let key: String = key.extract()?;
+        let int = |v: &Bound<'_, PyAny>| -> PyResult<usize> {
+            if v.is_instance_of::<pyo3::types::PyBool>() {
+                return Err(bad(format!("{key} must be a whole number >= 0, got {v}")));
+            }
+            v.extract::<usize>()
+                .map_err(|_| bad(format!("{key} must be a whole number >= 0, got {v}")))
+        };
+        let float = |v: &Bound<'_, PyAny>| -> PyResult<f64> {
+            v.extract::<f64>()
+                .ok()
+                .filter(|x| x.is_finite() && *x >= 0.0)
+                .ok_or_else(|| bad(format!("{key} must be a number >= 0, got {v}")))
+        };
+        let boolean = |v: &Bound<'_, PyAny>| -> PyResult<bool> {
+            v.extract::<bool>()
+                .map_err(|_| bad(format!("{key} must be True or False, got {v}")))
+        };
+        match key.as_str() {
+            "mirror" => o.mirror = boolean(&value)? && lattice.lattice().supports_mirror(),
+            "max_pieces" => {
+                o.max_pieces = if value.is_none() {
+                    None
+                } else {
+                    Some(int(&value)?)
+                }
+            }
+            "area_weight" => o.area_weight = float(&value)?,
+            "explorations" => o.explorations = int(&value)?,
+            "keep" => o.keep = int(&value)?,
+            "iterations" => o.iterations = int(&value)?,
+            "split_penalty" => o.split_penalty = float(&value)?,
+            "split_tries" => o.split_tries = int(&value)?,
+            "full_level" => o.full_levels = boolean(&value)?,
+            "extra_rounds" => o.extra_rounds = int(&value)?,
+            "patience" => o.patience = int(&value)?,
+            _ => {
+                return Err(bad(format!(
+                    "unknown option {key:?}; solve takes seed, time_limit, threads and {}",
+                    OPTION_NAMES.join(", ")
+                )))
+            }
+        }
+    }
+    Ok(o)
+}
+
+/// Notes the end of every level (the run's history), with its time.
+struct History {
+    start: Instant,
+    levels: Mutex<Vec<(f64, Event)>>,
+}
+
+impl Observer for History {
+    fn on_event(&self, event: &Event) {
+        if matches!(event, Event::LevelFinished { .. }) {
+            let t = self.start.elapsed().as_secs_f64();
+            self.levels
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .push((t, event.clone()));
+        }
+    }
+}
+
+/// Runs batches of explorations through a Python callable
+/// `executor(round, level, start, end, parents) -> list[bytes]` (parents and
+/// results as `Exploration` bytes): how `dissect.ray` spreads a search.
+struct PyExecutor {
+    call: Py<PyAny>,
+    /// The callable's exception, raised again when the search has ended.
+    error: Mutex<Option<PyErr>>,
+}
+
+impl Executor for PyExecutor {
+    fn run(&self, batch: &Batch<'_>) -> Result<Vec<Exploration>, String> {
+        Python::attach(|py| {
+            let parents: Vec<Bound<'_, PyBytes>> = batch
+                .parents
+                .iter()
+                .map(|p| PyBytes::new(py, &p.to_bytes()))
+                .collect();
+            let args = (
+                batch.round,
+                batch.level,
+                batch.indices.start,
+                batch.indices.end,
+                parents,
+            );
+            let got = self
+                .call
+                .call1(py, args)
+                .and_then(|r| r.extract::<Vec<Vec<u8>>>(py));
+            match got {
+                Ok(list) => list
+                    .iter()
+                    .map(|b| Exploration::from_bytes(b).map_err(|e| e.to_string()))
+                    .collect(),
+                Err(e) => {
+                    let message = e.to_string();
+                    *self.error.lock().unwrap_or_else(|p| p.into_inner()) = Some(e);
+                    Err(message)
+                }
+            }
+        })
+    }
+}
+
+/// Runs single explorations of one problem: the worker half of
+/// `dissect.ray.solve` (`Explorer(figures, seed, **options).explore(...)`).
+#[pyclass(module = "dissect._dissect", name = "Explorer", frozen)]
+pub(crate) struct PyExplorer {
+    explorer: solver::Explorer,
+}
+
+#[pymethods]
+impl PyExplorer {
+    #[new]
+    #[pyo3(signature = (figures, seed = 1, threads = 0, **options))]
+    fn new(
+        py: Python<'_>,
+        figures: Vec<PyRef<'_, PyFigure>>,
+        seed: u64,
+        threads: usize,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<PyExplorer> {
+        let (figs, _) = problem(py, &figures)?;
+        let opts = self::options(py, figs[0].lattice(), seed, threads, options)?;
+        let explorer = solver::Explorer::new(&figs, &opts)
+            .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+        Ok(PyExplorer { explorer })
+    }
+
+    /// The explorations `indices` of `level` in `round` from `parents`
+    /// (bytes), as bytes, in order; without the GIL.
+    fn explore<'py>(
+        &self,
+        py: Python<'py>,
+        round: usize,
+        level: usize,
+        indices: Vec<usize>,
+        parents: Vec<Vec<u8>>,
+    ) -> PyResult<Vec<Bound<'py, PyBytes>>> {
+        let parents = parents
+            .iter()
+            .map(|b| Exploration::from_bytes(b))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+        let stop = AtomicBool::new(false);
+        let out = py.detach(|| {
+            indices
+                .iter()
+                .map(|&i| {
+                    self.explorer
+                        .explore(round, level, i, &parents, &stop)
+                        .map(|e| e.to_bytes())
+                })
+                .collect::<Result<Vec<_>, _>>()
+        });
+        let out = out.map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+        Ok(out.iter().map(|b| PyBytes::new(py, b)).collect())
+    }
+}
+
+/// Finds a dissection (see `dissect.solve`); returns a dict the Python half
+/// turns into a `Dissection`. With `executor` (see [`PyExecutor`]) the
+/// explorations run wherever it sends them.
+#[pyfunction]
+#[pyo3(signature = (figures, seed = 1, time_limit = None, threads = 0, executor = None, **options))]
+pub(crate) fn solve<'py>(
+    py: Python<'py>,
+    figures: Vec<PyRef<'py, PyFigure>>,
+    seed: u64,
+    time_limit: Option<f64>,
+    threads: usize,
+    executor: Option<Py<PyAny>>,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (figs, names) = problem(py, &figures)?;
+    let lattice = figs[0].lattice();
+    let opts = self::options(py, lattice, seed, threads, options)?;
+    let deadline = deadline(time_limit).map_err(|m| error(py, Kind::Option, m))?;
+    let stop = AtomicBool::new(time_limit == Some(0.0));
+    let history = History {
+        start: Instant::now(),
+        levels: Mutex::new(Vec::new()),
+    };
+    let executor = executor.map(|call| PyExecutor {
+        call,
+        error: Mutex::new(None),
+    });
+    let run = watched(py, &stop, deadline, || {
+        let ex = executor.as_ref().map(|e| e as &dyn Executor);
+        solver::solve_with(&figs, &opts, &stop, &history, ex)
+    })?;
+    if let Some(e) = executor.and_then(|e| e.error.into_inner().unwrap_or_else(|p| p.into_inner()))
+    {
+        return Err(e);
+    }
+    let seconds = history.start.elapsed().as_secs_f64();
+    let outcome = run
+        .value
+        .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+    let Some(found) = outcome.found else {
+        if let Some(e) = run.interrupted {
+            return Err(e);
+        }
+        let why = if outcome.stopped {
+            format!(
+                "the time limit of {} s was reached",
+                time_limit.unwrap_or_default()
+            )
+        } else {
+            match opts.max_pieces {
+                Some(k) => format!("max_pieces={k} was reached"),
+                None => "every piece count was tried".to_string(),
+            }
+        };
+        return Err(error(
+            py,
+            Kind::NotFound,
+            format!(
+                "no dissection found: {why} after {seconds:.1} s; the best candidate ({} pieces) had matching score E_M = {}",
+                outcome.last_pieces,
+                outcome.best_mismatch.map_or("n/a".to_string(), |m| m.to_string())
+            ),
+        ));
+    };
+    let dissection = Dissection {
+        lattice,
+        mirror: opts.mirror,
+        names: names.clone(),
+        pieces: found.pieces.clone(),
+    };
+    if let Err(v) = dissect_core::verify::verify(&dissection, &figs) {
+        return Err(pyo3::exceptions::PyRuntimeError::new_err(format!(
+            "internal error: the solver's dissection failed verification: {}",
+            v[0]
+        )));
+    }
+    // A lower bound that costs next to nothing: components and
+    // incompatible cells (the SAT proof is `bound`'s and the engine's).
+    let cheap = dissect_exact::cheap_bound(&figs, opts.mirror)
+        .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+    let out = PyDict::new(py);
+    out.set_item("lattice", lattice.name())?;
+    out.set_item("mirror", opts.mirror)?;
+    out.set_item("names", names.clone())?;
+    out.set_item("pieces", pieces_to_py(py, lattice, &found.pieces)?)?;
+    out.set_item("level", found.level)?;
+    out.set_item("area_variance", found.variance)?;
+    out.set_item("explorations", outcome.explorations)?;
+    out.set_item("stopped", outcome.stopped)?;
+    out.set_item("interrupted", run.interrupted.is_some())?;
+    out.set_item("seconds", seconds)?;
+    out.set_item("seed", seed)?;
+    out.set_item("lower_bound", cheap.value)?;
+    out.set_item("lower_bound_reason", cheap.describe(&names))?;
+    out.set_item("optimal", found.piece_count() <= cheap.value)?;
+    let levels = history
+        .levels
+        .into_inner()
+        .unwrap_or_else(|e| e.into_inner());
+    let rows = PyList::empty(py);
+    for (t, event) in levels {
+        let Event::LevelFinished {
+            level,
+            pieces,
+            explorations,
+            best_mismatch: mismatch,
+            found,
+        } = event
+        else {
+            continue;
+        };
+        let row = PyDict::new(py);
+        row.set_item("seconds", t)?;
+        row.set_item("level", level)?;
+        row.set_item("pieces", pieces)?;
+        row.set_item("explorations", explorations)?;
+        row.set_item("best_mismatch", mismatch)?;
+        row.set_item("found", found)?;
+        rows.append(row)?;
+    }
+    out.set_item("history", rows)?;
+    Ok(out)
+}
+
+/// `pieces[f][i]` as nested Python lists of cell tuples.
+pub(crate) fn pieces_to_py<'py>(
+    py: Python<'py>,
+    lattice: LatticeKind,
+    pieces: &[Vec<Vec<dissect_core::Cell>>],
+) -> PyResult<Bound<'py, PyList>> {
+    let figs = PyList::empty(py);
+    for fig in pieces {
+        let list = PyList::empty(py);
+        for piece in fig {
+            list.append(cells_to_py(py, lattice, piece)?)?;
+        }
+        figs.append(list)?;
+    }
+    Ok(figs)
+}
+
+/// Proves a lower bound (see `dissect.bound`); returns a dict.
+#[pyfunction]
+#[pyo3(signature = (figures, time_limit = None, max_pieces = None, mirror = true))]
+pub(crate) fn bound<'py>(
+    py: Python<'py>,
+    figures: Vec<PyRef<'py, PyFigure>>,
+    time_limit: Option<f64>,
+    max_pieces: Option<usize>,
+    mirror: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (figs, names) = problem(py, &figures)?;
+    let lattice = figs[0].lattice();
+    let mirror = mirror && lattice.lattice().supports_mirror();
+    let deadline = deadline(time_limit).map_err(|m| error(py, Kind::Option, m))?;
+    let options = ExactOptions {
+        mirror,
+        mode: Mode::LowerBound,
+        deadline,
+        max_pieces,
+        ..ExactOptions::default()
+    };
+    let stop = AtomicBool::new(false);
+    let upper = AtomicUsize::new(usize::MAX);
+    let run = watched(py, &stop, deadline, || {
+        dissect_exact::search(&figs, &options, &stop, &upper, &())
+    })?;
+    let outcome = run
+        .value
+        .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
+    let out = PyDict::new(py);
+    out.set_item("value", outcome.lower_bound.value)?;
+    out.set_item("reason", outcome.lower_bound.describe(&names))?;
+    out.set_item(
+        "stopped",
+        outcome.stopped || run.interrupted.is_some() || stop.load(Ordering::SeqCst),
+    )?;
+    out.set_item("interrupted", run.interrupted.is_some())?;
+    out.set_item("lattice", lattice.name())?;
+    out.set_item("mirror", mirror)?;
+    out.set_item("names", names)?;
+    match &outcome.found {
+        Some(p) => out.set_item("pieces", pieces_to_py(py, lattice, p)?)?,
+        None => out.set_item("pieces", py.None())?,
+    }
+    Ok(out)
+}
+
+/// Checks a solution (JSON text, FORMAT.md) against its figures; returns
+/// the piece count or raises `InvalidSolution` listing every violation.
+#[pyfunction]
+pub(crate) fn verify(
+    py: Python<'_>,
+    figures: Vec<PyRef<'_, PyFigure>>,
+    solution: &str,
+) -> PyResult<usize> {
+    let (_, d) = parse_solution(solution)
+        .map_err(|e| error(py, Kind::InvalidSolution, format!("solution: {e}")))?;
+    let figs: Vec<Figure> = figures.iter().map(|f| f.figure.clone()).collect();
+    let count = py.detach(|| dissect_core::verify::verify(&d, &figs));
+    count.map_err(|v| {
+        let all: Vec<String> = v.iter().map(|v| v.to_string()).collect();
+        error(
+            py,
+            Kind::InvalidSolution,
+            format!("not a valid dissection: {}", all.join("; ")),
+        )
+    })
+}
+
+/// A solution file (FORMAT.md) from its parts and `extra` keys (a JSON
+/// object text), written by the core's writer.
+#[pyfunction]
+#[pyo3(signature = (lattice, mirror, names, pieces, extra = "{}"))]
+pub(crate) fn solution_json(
+    py: Python<'_>,
+    lattice: &str,
+    mirror: bool,
+    names: Vec<String>,
+    pieces: Vec<Vec<Vec<Vec<i64>>>>,
+    extra: &str,
+) -> PyResult<String> {
+    let kind = crate::figure::lattice(py, lattice)?;
+    let extra: serde_json::Map<String, serde_json::Value> = serde_json::from_str(extra)
+        .map_err(|e| error(py, Kind::Option, format!("extra keys: {e}")))?;
+    let pieces = pieces
+        .iter()
+        .map(|fig| {
+            fig.iter()
+                .map(|piece| {
+                    piece
+                        .iter()
+                        .map(|c| crate::figure::cell_from_coords(py, kind, c))
+                        .collect::<PyResult<Vec<_>>>()
+                })
+                .collect::<PyResult<Vec<_>>>()
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let d = Dissection {
+        lattice: kind,
+        mirror,
+        names,
+        pieces,
+    };
+    Ok(d.to_file(extra).to_json())
+}

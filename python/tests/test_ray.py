@@ -1,0 +1,91 @@
+"""dissect.ray on a local cluster (ray.init(num_cpus=2)): answers equal the
+local ones. Skipped without Ray unless DISSECT_REQUIRE_RAY=1 (CI sets it)."""
+
+import os
+
+import pytest
+
+if os.environ.get("DISSECT_REQUIRE_RAY") == "1":
+    import ray
+else:
+    ray = pytest.importorskip("ray")
+
+import dissect
+
+from conftest import instance
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
+    yield
+    ray.shutdown()
+
+
+def problems():
+    return [
+        instance("squares-3-4-split-to-5", "square")[0],
+        {"figures": instance("squares-3-4-split-to-5", "square")[0], "seed": 2},
+        instance("tri-triangle8-to-rect4x8", "tri4")[0],
+        instance("cube4-cavity-to-7x4x2", "cubic")[0],
+    ]
+
+
+def test_solve_many_matches_local_answers_in_order(cluster):
+    import dissect.ray as dray
+
+    remote = dray.solve_many(problems(), explorations=100)
+    assert len(remote) == 4
+    for p, r in zip(problems(), remote):
+        figures, opts = (p["figures"], {"seed": p["seed"]}) if isinstance(p, dict) else (p, {})
+        local = dissect.solve(figures, explorations=100, **opts)
+        assert r.pieces == local.pieces
+        assert r.verify()
+
+
+def test_solve_many_failures(cluster):
+    import dissect.ray as dray
+
+    figures = instance("squares-3-4-split-to-5", "square")[0]
+    out = dray.solve_many([figures, figures], return_exceptions=True, max_pieces=2, explorations=10)
+    assert all(isinstance(e, dissect.NoDissectionFound) for e in out)
+    with pytest.raises(dissect.NoDissectionFound):
+        dray.solve_many([figures], max_pieces=2, explorations=10)
+    with pytest.raises(dissect.ProblemError):
+        dray.solve_many([[figures[0]]])
+
+
+@pytest.mark.parametrize(
+    "name, lattice, options",
+    [
+        ("squares-3-4-split-to-5", "square", {"seed": 1}),
+        ("squares-3-4-split-to-5", "square", {"seed": 2, "explorations": 60, "patience": 5}),
+        ("tri-triangle8-to-rect4x8", "tri4", {"seed": 1}),
+        ("cube4-cavity-to-7x4x2", "cubic", {"seed": 3, "explorations": 100}),
+    ],
+)
+def test_distributed_search_gives_the_local_answer(cluster, name, lattice, options, tmp_path):
+    import dissect.ray as dray
+
+    from conftest import check_with_verify_py
+
+    figures, files = instance(name, lattice)
+    local = dissect.solve(figures, **options)
+    spread = dray.solve(figures, tasks=2, **options)
+    assert spread.pieces == local.pieces
+    assert spread.history and [
+        (h["level"], h["explorations"], h["best_mismatch"]) for h in spread.history
+    ] == [(h["level"], h["explorations"], h["best_mismatch"]) for h in local.history]
+    check_with_verify_py(spread, files, tmp_path)
+
+
+def test_distributed_search_errors(cluster):
+    import dissect.ray as dray
+
+    figures = instance("squares-3-4-split-to-5", "square")[0]
+    with pytest.raises(dissect.OptionError):
+        dray.solve(figures, explorashuns=4)
+    with pytest.raises(dissect.OptionError):
+        dray.solve(figures, tasks=0)
+    with pytest.raises(dissect.NoDissectionFound):
+        dray.solve(figures, max_pieces=2, explorations=8)

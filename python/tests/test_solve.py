@@ -1,0 +1,138 @@
+import json
+import subprocess
+
+import numpy as np
+import pytest
+
+import dissect
+from dissect import Figure
+
+from conftest import check_with_verify_py, instance
+
+CASES = [
+    ("squares-3-4-split-to-5", "square", 4),
+    ("tri-triangle8-to-rect4x8", "tri4", 2),
+    ("cube4-cavity-to-7x4x2", "cubic", 4),
+]
+
+
+@pytest.mark.parametrize("name, lattice, pieces", CASES)
+def test_solve_shared_instances_checked_by_verify_py(name, lattice, pieces, tmp_path):
+    figures, files = instance(name, lattice)
+    d = dissect.solve(figures, seed=1)
+    assert d.lattice == lattice
+    assert d.piece_count == pieces
+    assert len(d.pieces) == len(figures)
+    assert d.verify()
+    assert dissect.verify(figures, d) == pieces
+    check_with_verify_py(d, files, tmp_path)
+    assert d.lower_bound is not None and d.lower_bound <= d.piece_count
+    assert d.optimal == (d.lower_bound == d.piece_count)
+    assert d.history and d.history[-1]["found"]
+    sol = json.loads(d.to_json())
+    assert sol["format"] == "dissection-solution/1"
+    assert [f["name"] for f in sol["figures"]] == [p.name for p in files]
+    assert sol["pieces"] == pieces and sol["seed"] == 1
+
+
+def test_solve_from_arrays_and_thread_count_does_not_matter():
+    a = Figure.from_array(np.ones((3, 4), bool))
+    b = Figure.from_array(np.ones((2, 6), bool))
+    one = dissect.solve([a, b], seed=5, threads=1)
+    two = dissect.solve([a, b], seed=5, threads=2)
+    assert one.piece_count == 2
+    assert one.pieces == two.pieces
+    assert one.names == ["figure-1", "figure-2"]
+
+
+@pytest.mark.parametrize(
+    "args, options",
+    [
+        ([], {}),
+        (["--seed", "2", "--explorations", "40", "--patience", "5", "--no-mirror"],
+         {"seed": 2, "explorations": 40, "patience": 5, "mirror": False}),
+    ],
+)
+def test_same_answer_as_the_cli_for_the_same_seed(dissect_bin, tmp_path, args, options):
+    figures, files = instance("squares-3-4-split-to-5", "square")
+    out = tmp_path / "cli.json"
+    r = subprocess.run(
+        [str(dissect_bin), "solve", "-q", *args, "-o", str(out), *map(str, files)],
+        capture_output=True, text=True,
+    )
+    assert r.returncode == 0, r.stderr
+    cli = json.loads(out.read_text())
+    py = json.loads(dissect.solve(figures, **options).to_json())
+    assert py["mirror"] == cli["mirror"]
+    assert [f["pieces"] for f in py["figures"]] == [f["pieces"] for f in cli["figures"]]
+    assert py["pieces"] == cli["pieces"]
+
+
+def test_verify_rejects_a_bad_solution(tmp_path):
+    figures, _ = instance("squares-3-4-split-to-5", "square")
+    d = dissect.solve(figures, seed=1)
+    sol = d.to_dict()
+    # Move one cell from piece 0 to piece 1 in the first figure.
+    sol["figures"][0]["pieces"][1].append(sol["figures"][0]["pieces"][0].pop())
+    with pytest.raises(dissect.InvalidSolution) as e:
+        dissect.verify(figures, sol)
+    assert "not a valid dissection" in str(e.value)
+    path = tmp_path / "s.json"
+    path.write_text(json.dumps(sol))
+    with pytest.raises(dissect.InvalidSolution):
+        dissect.verify(figures, path)
+    with pytest.raises(dissect.InvalidSolution) as e:
+        dissect.verify(figures, "{ not json")
+    assert "line 1" in str(e.value)
+
+
+def test_bound():
+    figures, _ = instance("squares-3-4-split-to-5", "square")
+    b = dissect.bound(figures, max_pieces=3, time_limit=60)
+    assert b.value == 4 and int(b) == 4
+    assert "b.txt" in b.reason and "no piece can hold two" in b.reason
+    assert not b.stopped and b.dissection is None
+
+
+def test_no_dissection_found_within_max_pieces():
+    figures, _ = instance("squares-3-4-split-to-5", "square")
+    with pytest.raises(dissect.NoDissectionFound) as e:
+        dissect.solve(figures, max_pieces=2, explorations=20)
+    assert "max_pieces=2" in str(e.value)
+
+
+def test_time_limit_zero_stops_at_once():
+    figures, _ = instance("squares-6-6-7-split-to-11", "square")
+    with pytest.raises(dissect.NoDissectionFound) as e:
+        dissect.solve(figures, time_limit=0)
+    assert "time limit" in str(e.value)
+
+
+A = Figure.from_text("###\n###\n")
+B = Figure.from_text("######\n")
+C = Figure.from_text("#####\n")
+
+
+@pytest.mark.parametrize(
+    "call, cls, words",
+    [
+        (lambda: dissect.solve([A, C]), dissect.ProblemError, ["different areas", "6 cells", "5 cells"]),
+        (lambda: dissect.solve([A]), dissect.ProblemError, ["at least two figures, got 1"]),
+        (lambda: dissect.solve([A, Figure.from_text("######", lattice="tri4")]), dissect.ProblemError,
+         ["different lattices", "square", "tri4"]),
+        (lambda: dissect.solve([A, "######"]), dissect.ProblemError, ["figure 2 is a str"]),
+        (lambda: dissect.solve(A), dissect.ProblemError, ["list"]),
+        (lambda: dissect.solve([A, B], explorashuns=3), dissect.OptionError, ["unknown option", "explorashuns"]),
+        (lambda: dissect.solve([A, B], explorations=-1), dissect.OptionError, ["explorations", "-1"]),
+        (lambda: dissect.solve([A, B], area_weight=float("nan")), dissect.OptionError, ["area_weight"]),
+        (lambda: dissect.solve([A, B], time_limit=-2), dissect.OptionError, ["time_limit", "-2"]),
+        (lambda: dissect.solve([A, B], threads=1000), dissect.OptionError, ["threads=1000"]),
+        (lambda: dissect.solve([A, B], mirror="yes"), dissect.OptionError, ["mirror", "True or False"]),
+    ],
+)
+def test_errors_are_exceptions_naming_the_problem(call, cls, words):
+    with pytest.raises(cls) as e:
+        call()
+    assert isinstance(e.value, dissect.DissectError)
+    for w in words:
+        assert w in str(e.value)
