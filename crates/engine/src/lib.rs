@@ -23,6 +23,7 @@ mod run;
 mod verified;
 
 pub use options::{OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS};
+pub use repair::ExactRepair;
 pub use report::{End, Improvement, LowerBound, Report, Source};
 pub use run::{run, EngineError, EngineEvent, EngineObserver};
 pub use verified::Verified;

@@ -10,9 +10,16 @@ use dissect_exact::{repair, RepairOptions};
 
 /// [`Repair`] by [`dissect_exact::repair`] with a deterministic budget (SAT
 /// conflicts); a deadline only when the run has a time limit.
-pub(crate) struct ExactRepair<'a> {
-    pub(crate) figures: &'a [Figure],
-    pub(crate) options: RepairOptions,
+pub struct ExactRepair<'a> {
+    figures: &'a [Figure],
+    options: RepairOptions,
+}
+
+impl<'a> ExactRepair<'a> {
+    /// The repairer of near misses of `figures` with these options.
+    pub fn new(figures: &'a [Figure], options: RepairOptions) -> ExactRepair<'a> {
+        ExactRepair { figures, options }
+    }
 }
 
 impl Repair for ExactRepair<'_> {

@@ -24,6 +24,12 @@ use crate::verified::Verified;
 /// figures would spend memory and a core on a formula it cannot solve.
 pub const PROVE_MAX_CELLS: usize = 600;
 
+/// SAT conflicts the exact side may spend in a run without a time limit.
+pub const EXACT_BUDGET: u64 = 100_000;
+
+/// The largest SAT encoding the exact side may build (bytes).
+const EXACT_MAX_BYTES: u64 = 256 << 20;
+
 /// How long a stopped run waits for the exact side to return.
 const EXACT_GRACE: Duration = Duration::from_millis(300);
 
@@ -190,9 +196,11 @@ impl ExactObserver for Shared<'_> {
 /// Runs `options` on `figures` (named `names` in the answer, input order).
 ///
 /// The run ends when the best dissection meets the lower bound, at the
-/// time limit, when `stop` is raised, or by the work rule: without a time
-/// limit, when the heuristic ends (the exact side is then stopped, so the
-/// answer does not depend on its speed); with one, when both sides ended.
+/// time limit, when `stop` is raised, or when both sides ended by their
+/// work rules: the heuristic after [`RunConfig::idle_rounds`](crate::RunConfig)
+/// rounds without improvement (or the paper's first valid level), the
+/// exact side after [`EXACT_BUDGET`] SAT conflicts (no time limit) or
+/// when its bound meets the best dissection.
 /// The answer is the dissection with the fewest pieces; on a tie the
 /// heuristic's, so that without a time limit the same seed gives the same
 /// answer on any machine and for any thread count.
@@ -249,17 +257,23 @@ pub fn run(
             Mode::LowerBound
         },
         max_pieces: config.max_pieces,
+        // Without a time limit the exact side beside the heuristic counts
+        // its work (SAT conflicts), so what it proves and finds is the same
+        // on every machine; the run waits for it.
+        conflict_budget: (deadline.is_none() && strategy != Strategy::Exact)
+            .then_some(EXACT_BUDGET),
+        max_encoding_bytes: EXACT_MAX_BYTES,
         ..ExactOptions::default()
     };
-    let exact_repair = crate::repair::ExactRepair {
+    let exact_repair = crate::repair::ExactRepair::new(
         figures,
-        options: RepairOptions {
+        RepairOptions {
             mirror,
             deadline,
             budget: REPAIR_BUDGET,
             ..RepairOptions::default()
         },
-    };
+    );
     let repairer: Option<&dyn Repair> = config.repair.then_some(&exact_repair as &dyn Repair);
 
     if deadline.is_some_and(|d| Instant::now() >= d) {
@@ -332,12 +346,10 @@ pub fn run(
             }
             let h_done = heuristic_done.load(Ordering::SeqCst);
             let x_done = exact_done();
-            let ended = if heuristic_on {
-                // Without a time limit the heuristic's end is the run's end.
-                h_done && (x_done || deadline.is_none())
-            } else {
-                x_done
-            };
+            // Both sides end on their own: the heuristic by its work rule
+            // (or the time limit), the exact side by its conflict budget
+            // (or the time limit).
+            let ended = h_done && x_done;
             if ended {
                 break;
             }

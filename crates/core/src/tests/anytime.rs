@@ -95,7 +95,7 @@ fn search_of<'a>(
     options: &'a Options,
     stop: &'a AtomicBool,
 ) -> Search<'a> {
-    Search::new(figures, options, stop, &()).expect("valid figures")
+    Search::new(figures, options, stop, &(), None).expect("valid figures")
 }
 
 /// A near miss (one cell of the 2×3 rectangle in the wrong piece) goes to
