@@ -45,8 +45,9 @@ use crate::ExactError;
 pub struct RepairOptions {
     /// Whether 2D pieces may be turned over (ignored on `cubic`).
     pub mirror: bool,
-    /// SAT conflicts the repair may spend in all (its deterministic measure
-    /// of work).
+    /// SAT conflicts the repair may spend in all, counting each solve
+    /// after a connectivity cut as one more (its deterministic measure of
+    /// work).
     pub budget: u64,
     /// The most cells (over all figures) the repair may free.
     pub max_free_cells: usize,
@@ -60,7 +61,7 @@ impl Default for RepairOptions {
     fn default() -> RepairOptions {
         RepairOptions {
             mirror: true,
-            budget: 20_000,
+            budget: 5_000,
             max_free_cells: 800,
             deadline: None,
             max_motions: 48,
@@ -885,8 +886,17 @@ impl<'c, 'a> Round<'c, 'a> {
             return Outcome::Unsat;
         }
         let shapes = &self.cand.inst.shapes;
-        sat.set_conflict_limit(Some(sat.conflicts().saturating_add(budget)));
+        let start = sat.conflicts();
+        let mut solves = 0u64;
         loop {
+            // Every solve after a cut costs one unit too, so a long chain of
+            // cuts without conflicts still ends within the budget.
+            let used = sat.conflicts() - start + solves;
+            if used >= budget {
+                return Outcome::Unknown;
+            }
+            sat.set_conflict_limit(Some(sat.conflicts() + (budget - used)));
+            solves += 1;
             match sat.solve(deadline) {
                 None => return Outcome::Unknown,
                 Some(false) => return Outcome::Unsat,
