@@ -1,11 +1,11 @@
 //! Measures the exact repair on near misses of a real instance.
 //!
-//! `cargo run --release -p dissect-exact --example repair_bench -- DIR [SEED] [SECONDS]`
+//! `cargo run --release -p dissect-exact --example repair_bench -- DIR [SEED] [SECONDS] [SOLUTION.json]`
 //!
 //! Solves the instance in `DIR` (`a.txt`, `b.txt`, ... on the square
 //! lattice, or the lattice named by `DIR/lattice`) with the heuristic of
-//! `dissect_core` (SEED, at most SECONDS), then spoils its dissection in
-//! two ways and repairs each:
+//! `dissect_core` (SEED, at most SECONDS), or reads a valid dissection from
+//! SOLUTION.json, then spoils the dissection in two ways and repairs each:
 //! * `swap-s`: `s` random pairs of neighbouring cells of different pieces
 //!   swap labels in one figure (a near miss of matching cost about 2s);
 //! * `merge`: one of the smallest pieces is merged into the neighbour it
@@ -49,6 +49,28 @@ fn main() {
         .filter_map(|n| std::fs::read_to_string(dir.join(n)).ok())
         .map(|t| parse_figure(&t, lattice).expect("figure parses"))
         .collect();
+    let start = Instant::now();
+    let pieces = match args.get(3) {
+        Some(path) => {
+            let text = std::fs::read_to_string(path).expect("a solution file");
+            dissect_core::io::parse_solution(&text)
+                .expect("a solution")
+                .1
+                .pieces
+        }
+        None => match heuristic(&figures, seed, seconds) {
+            Some(p) => p,
+            None => {
+                println!("heuristic found nothing in {seconds} s");
+                return;
+            }
+        },
+    };
+    spoil_and_repair(&dir, &figures, lattice, pieces, seed, start);
+}
+
+/// A valid dissection by the heuristic, if it finds one in `seconds`.
+fn heuristic(figures: &[Figure], seed: u64, seconds: u64) -> Option<Vec<Vec<Vec<Cell>>>> {
     let options = dissect_core::solver::Options {
         seed,
         ..Default::default()
@@ -56,7 +78,7 @@ fn main() {
     let stop = AtomicBool::new(false);
     let start = Instant::now();
     let outcome = std::thread::scope(|s| {
-        let h = s.spawn(|| dissect_core::solver::solve(&figures, &options, &stop, &()));
+        let h = s.spawn(|| dissect_core::solver::solve(figures, &options, &stop, &()));
         while !h.is_finished() && start.elapsed() < Duration::from_secs(seconds) {
             std::thread::sleep(Duration::from_millis(50));
         }
@@ -64,14 +86,20 @@ fn main() {
         h.join().expect("solver thread")
     })
     .expect("solves");
-    let Some(found) = outcome.found else {
-        println!("heuristic found nothing in {seconds} s");
-        return;
-    };
-    let pieces = found.pieces;
+    outcome.found.map(|f| f.pieces)
+}
+
+fn spoil_and_repair(
+    dir: &std::path::Path,
+    figures: &[Figure],
+    lattice: LatticeKind,
+    pieces: Vec<Vec<Vec<Cell>>>,
+    seed: u64,
+    start: Instant,
+) {
     let k = pieces[0].len();
     println!(
-        "{}: {} cells, heuristic {} pieces in {:.1} s",
+        "{}: {} cells, a valid dissection of {} pieces in {:.1} s",
         dir.display(),
         figures[0].len(),
         k,
@@ -91,9 +119,9 @@ fn main() {
     let run = |name: String, cand: Vec<Vec<Vec<Cell>>>| {
         let stop = AtomicBool::new(false);
         let t = Instant::now();
-        let r = repair_report(&figures, &cand, &options, &stop).expect("valid candidate");
+        let r = repair_report(figures, &cand, &options, &stop).expect("valid candidate");
         println!(
-            "{name:10} {:5} {:7.1} ms  trouble {:4}  free {:4}  rounds {}  conflicts {}",
+            "{name:10} {:5} {:7.1} ms  trouble {:4}  free {:4}  rounds {}  conflicts {}  cuts {}",
             match &r.found {
                 Some(p) => format!("{}p", p[0].len()),
                 None => "none".to_string(),
@@ -102,7 +130,8 @@ fn main() {
             r.trouble,
             r.free,
             r.rounds,
-            r.conflicts
+            r.conflicts,
+            r.cuts
         );
         r.found.is_some()
     };
@@ -134,11 +163,11 @@ fn main() {
         }
         println!("swap-{swaps}: {ok}/{trials} repaired");
     }
-    // Merge each of the three smallest pieces into its best neighbour.
+    // Merge each of the six smallest pieces into its best neighbour.
     let mut order: Vec<usize> = (0..k).collect();
     order.sort_by_key(|&i| (pieces[0][i].len(), i));
     let mut ok = 0;
-    let tries = order.len().min(3);
+    let tries = order.len().min(6);
     for &small in order.iter().take(tries) {
         let labels = label_of(0, &pieces);
         let mut shared = vec![0usize; k];

@@ -45,8 +45,9 @@ use crate::ExactError;
 pub struct RepairOptions {
     /// Whether 2D pieces may be turned over (ignored on `cubic`).
     pub mirror: bool,
-    /// SAT conflicts the repair may spend in all (its deterministic measure
-    /// of work).
+    /// SAT conflicts the repair may spend in all, counting each solve
+    /// after a connectivity cut as one more (its deterministic measure of
+    /// work).
     pub budget: u64,
     /// The most cells (over all figures) the repair may free.
     pub max_free_cells: usize,
@@ -60,7 +61,7 @@ impl Default for RepairOptions {
     fn default() -> RepairOptions {
         RepairOptions {
             mirror: true,
-            budget: 20_000,
+            budget: 5_000,
             max_free_cells: 800,
             deadline: None,
             max_motions: 48,
@@ -81,6 +82,8 @@ pub struct RepairReport {
     pub rounds: usize,
     /// SAT conflicts spent.
     pub conflicts: u64,
+    /// Connectivity cuts added.
+    pub cuts: usize,
     /// Whether the stop flag or the deadline ended it.
     pub stopped: bool,
 }
@@ -123,6 +126,7 @@ pub fn repair_report(
         free: 0,
         rounds: 0,
         conflicts: 0,
+        cuts: 0,
         stopped: false,
     };
     let interrupted =
@@ -160,8 +164,11 @@ pub fn repair_report(
             return Ok(report);
         }
         let mut sat = Sat::new(stop, None);
-        let outcome = Round::new(&cand, free, options, &mut sat, &interrupted)
-            .map(|mut round| round.solve(&mut sat, left, options.deadline));
+        let outcome = Round::new(&cand, free, options, &mut sat, &interrupted).map(|mut round| {
+            let o = round.solve(&mut sat, left, options.deadline);
+            report.cuts += round.cuts;
+            o
+        });
         report.conflicts += sat.conflicts();
         match outcome {
             None | Some(Outcome::Unknown) => {
@@ -531,6 +538,8 @@ struct Round<'c, 'a> {
     vars: Vec<Vec<Vec<(usize, i32)>>>,
     /// Whether an empty clause came up (the neighbourhood holds nothing).
     unsat: bool,
+    /// Connectivity cuts added.
+    cuts: usize,
 }
 
 impl<'c, 'a> Round<'c, 'a> {
@@ -593,6 +602,7 @@ impl<'c, 'a> Round<'c, 'a> {
             free,
             vars,
             unsat: false,
+            cuts: 0,
         };
         // Exactly one piece per free cell.
         for (f, s) in shapes.iter().enumerate() {
@@ -741,31 +751,58 @@ impl<'c, 'a> Round<'c, 'a> {
         };
         let holds0: Vec<usize> = (0..s0.len()).filter(|&a| self.may_hold(0, i, a)).collect();
         let holdsf: Vec<usize> = (0..sf.len()).filter(|&b| self.may_hold(f, i, b)).collect();
+        let dist2 = |p: Point, q: Point| -> i64 {
+            (0..3)
+                .map(|d| i64::from(p[d] - q[d]) * i64::from(p[d] - q[d]))
+                .sum()
+        };
+        // Motions that move the anchor least from where the best motion
+        // puts it come first (a tiny piece may fit almost anywhere).
+        let mut ranked: Vec<(i64, usize, Transform)> = Vec::new();
         if let Some(&a0) = fixed0.first() {
+            let home = self.cand.best[f][i].map(|(t, _)| t.apply(s0.points[a0]));
             for g in &inst.syms {
                 let ga = g.apply(s0.points[a0]);
                 for &b in &holdsf {
                     let q = sf.points[b];
                     let t = [q[0] - ga[0], q[1] - ga[1], q[2] - ga[2]];
                     if inst.is_translation(t) {
-                        push(Transform::new(*g, t), &mut out);
+                        let key = home.map_or(0, |h| dist2(h, q));
+                        ranked.push((key, ranked.len(), Transform::new(*g, t)));
                     }
                 }
             }
         } else if let Some(&b0) = fixedf.first() {
             let q = sf.points[b0];
+            let home = self.cand.best[f][i].map(|(_, u)| u.apply(q));
             for g in &inst.syms {
                 for &a in &holds0 {
                     let ga = g.apply(s0.points[a]);
                     let t = [q[0] - ga[0], q[1] - ga[1], q[2] - ga[2]];
                     if inst.is_translation(t) {
-                        push(Transform::new(*g, t), &mut out);
+                        let key = home.map_or(0, |h| dist2(h, s0.points[a]));
+                        ranked.push((key, ranked.len(), Transform::new(*g, t)));
                     }
                 }
             }
+        }
+        if fixed0.first().or(fixedf.first()).is_some() {
+            ranked.sort_unstable_by_key(|&(key, index, _)| (key, index));
+            for (_, _, t) in ranked {
+                if out.len() >= cap {
+                    break;
+                }
+                push(t, &mut out);
+            }
         } else {
-            // A piece with no fixed cell here: the motions that carry most
-            // of the cells it may hold onto cells it may hold.
+            // A piece with no fixed cell here: the motions that carry a cell
+            // it may hold onto one, those that keep its first cell nearest
+            // to where the best motion puts it first, then those that carry
+            // the most.
+            let first = self.cand.label[0].iter().position(|&l| l == i);
+            let home = first.and_then(|a| {
+                self.cand.best[f][i].map(|(t, _)| (s0.points[a], t.apply(s0.points[a])))
+            });
             let mut votes: HashMap<(usize, Point), u32> = HashMap::new();
             for (gi, g) in inst.syms.iter().enumerate() {
                 for &a in &holds0 {
@@ -779,9 +816,18 @@ impl<'c, 'a> Round<'c, 'a> {
                     }
                 }
             }
-            let mut ranked: Vec<((usize, Point), u32)> = votes.into_iter().collect();
-            ranked.sort_by(|x, y| y.1.cmp(&x.1).then(x.0.cmp(&y.0)));
-            for ((gi, t), _) in ranked {
+            let mut ranked: Vec<(i64, std::cmp::Reverse<u32>, usize, Point)> = votes
+                .into_iter()
+                .map(|((gi, t), v)| {
+                    let key = home.map_or(0, |(p, h)| {
+                        let gp = inst.syms[gi].apply(p);
+                        dist2([gp[0] + t[0], gp[1] + t[1], gp[2] + t[2]], h)
+                    });
+                    (key, std::cmp::Reverse(v), gi, t)
+                })
+                .collect();
+            ranked.sort_unstable();
+            for (_, _, gi, t) in ranked {
                 push(Transform::new(inst.syms[gi], t), &mut out);
                 if out.len() >= cap {
                     break;
@@ -840,8 +886,17 @@ impl<'c, 'a> Round<'c, 'a> {
             return Outcome::Unsat;
         }
         let shapes = &self.cand.inst.shapes;
-        sat.set_conflict_limit(Some(sat.conflicts().saturating_add(budget)));
+        let start = sat.conflicts();
+        let mut solves = 0u64;
         loop {
+            // Every solve after a cut costs one unit too, so a long chain of
+            // cuts without conflicts still ends within the budget.
+            let used = sat.conflicts() - start + solves;
+            if used >= budget {
+                return Outcome::Unknown;
+            }
+            sat.set_conflict_limit(Some(sat.conflicts() + (budget - used)));
+            solves += 1;
             match sat.solve(deadline) {
                 None => return Outcome::Unknown,
                 Some(false) => return Outcome::Unsat,
@@ -881,6 +936,7 @@ impl<'c, 'a> Round<'c, 'a> {
                             continue;
                         }
                         for (c, d) in [(comp, &comps[main]), (&comps[main], comp)] {
+                            self.cuts += 1;
                             if !self.cut(sat, f, i, c, d) {
                                 return Outcome::Unsat;
                             }

@@ -116,6 +116,25 @@ fn a_repair_may_need_a_turn_and_keeps_at_most_k_pieces() {
 }
 
 #[test]
+fn a_one_cell_piece_moved_by_a_swap_goes_home() {
+    // `c` is one cell; in the bar it swapped places with a cell of `b`, so
+    // its best motion is wrong and its cells are all freed.
+    let (figs, cand) = labelled(
+        LatticeKind::Square,
+        &[
+            "aaaaaa\naaaaaa\nbbbbbb\nbbbbbc\n",
+            "aaaaaabbbbbb\naaaaaabbbbcb\n",
+        ],
+    );
+    let report = repair_report(&figs, &cand, &RepairOptions::default(), &no_stop()).unwrap();
+    let found = report.found.expect("repaired");
+    // At most the candidate's 3 pieces (here the floating piece may even
+    // vanish: two 6×2 halves).
+    assert!(verified(&figs, &found, true) <= 3);
+    assert_eq!(report.rounds, 1);
+}
+
+#[test]
 fn cubic_near_miss_is_repaired() {
     // A 2×2×2 cube into a 4×2×1 slab: two 2×2×1 slabs; one pair swapped.
     let (figs, cand) = labelled(LatticeKind::Cubic, &["aa\naa\n\nbb\nbb\n", "abab\naabb\n"]);

@@ -20,7 +20,7 @@ pub fn drawing(
     opts.check()?;
     if scene.lattice() == dissect_core::LatticeKind::Cubic {
         return Err(RenderError::BadOption(
-            "cut sheets are made for 2D lattices (square, tri4); use --format stl or ldraw for cubic".into(),
+            "cut sheets are made for 2D lattices (square, tri4, tri3, hex); use --format stl or ldraw for cubic".into(),
         ));
     }
     let s = opts.cell_mm;
@@ -30,17 +30,14 @@ pub fn drawing(
     let (mut x, mut y, mut row_h, mut width): (f64, f64, f64, f64) = (margin, margin, 0.0, 0.0);
     for i in 0..scene.piece_count() {
         let outline = scene.outline(0, i);
-        let [lo, hi] = outline.bounds().expect("pieces have cells");
-        let (w, h) = (
-            (hi[0] - lo[0]) as f64 / 2.0 * s,
-            (hi[1] - lo[1]) as f64 / 2.0 * s,
-        );
+        let [lo, hi] = outline.bounds_f64().expect("pieces have cells");
+        let (w, h) = ((hi[0] - lo[0]) * s, (hi[1] - lo[1]) * s);
         if x > margin && x + w > sheet_width_mm - margin {
             x = margin;
             y += row_h + gap;
             row_h = 0.0;
         }
-        let (ox, oy) = (lo[0] as f64 / 2.0, lo[1] as f64 / 2.0);
+        let (ox, oy) = (lo[0], lo[1]);
         let loops: Vec<Vec<[f64; 2]>> = offset_loops(&outline, opts.clearance_mm / s)
             .into_iter()
             .map(|l| {

@@ -88,12 +88,21 @@ pub fn merge_cells(piece: usize, cells: &[Cell], kind: PartKind) -> Vec<Brick> {
 }
 
 /// One `.ldr` model per figure (named after the figure), or an error for
-/// `tri4`, whose triangles have no LEGO part.
+/// `tri4`, `tri3` and `hex`, whose triangles and hexagons have no LEGO part.
 pub fn render(scene: &Scene, kind: PartKind) -> Result<Vec<(String, String)>, RenderError> {
-    if scene.lattice() == LatticeKind::Tri4 {
-        return Err(RenderError::BadOption(
-            "LDraw models are made for the square and cubic lattices (LEGO has no quarter-square triangles)".into(),
-        ));
+    match scene.lattice() {
+        LatticeKind::Tri4 => {
+            return Err(RenderError::BadOption(
+                "LDraw models are made for the square and cubic lattices (LEGO has no quarter-square triangles)".into(),
+            ));
+        }
+        LatticeKind::Tri3 | LatticeKind::Hex => {
+            return Err(RenderError::BadOption(format!(
+                "LDraw models are made for the square and cubic lattices (LEGO has no {} bricks); use --format stl to print the pieces",
+                if scene.lattice() == LatticeKind::Tri3 { "equilateral-triangle" } else { "hexagonal" }
+            )));
+        }
+        LatticeKind::Square | LatticeKind::Cubic => {}
     }
     let cubic = scene.lattice() == LatticeKind::Cubic;
     let kind = if cubic { PartKind::Brick } else { kind };

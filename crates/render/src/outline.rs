@@ -2,46 +2,65 @@
 //! per connected boundary curve (the outer boundary and each hole), found by
 //! cancelling shared edges and tracing the rest.
 //!
-//! Coordinates are *half units*: the point `(x, y)` of the plane is stored as
-//! `[2x, 2y]`, so the centre of a `tri4` square is an integer point too.
-//! The plane is in image orientation (y grows downward).
+//! Corners are stored as integer *grid units* so that shared edges cancel
+//! exactly: on `square`, `tri4` (and `cubic` faces) half units, the point
+//! `(x, y)` of the plane stored as `[2x, 2y]`, so the centre of a `tri4`
+//! square is an integer point too; on `tri3` `[2x, y/h]` and on `hex`
+//! `[2x, 3y/h]` (`h = √3/2`: triangle corners lie on the rows' lines, hexagon
+//! corners a third of a row from their centres). [`Loop::points_f64`] gives
+//! the plane. The plane is in image orientation (y grows downward).
 
 use std::collections::HashMap;
 
 use dissect_core::{Cell, LatticeKind};
 
-/// A point in half units (`[2x, 2y]`).
+/// A point in grid units (half units `[2x, 2y]` on `square` and `tri4`;
+/// see the module documentation for `tri3` and `hex`).
 pub type HalfPoint = [i64; 2];
+
+/// The plane length of one grid unit along x and along y.
+pub fn grid_unit(lattice: LatticeKind) -> [f64; 2] {
+    let h = 3f64.sqrt() / 2.0;
+    match lattice {
+        LatticeKind::Tri3 => [0.5, h],
+        LatticeKind::Hex => [0.5, h / 3.0],
+        LatticeKind::Square | LatticeKind::Tri4 | LatticeKind::Cubic => [0.5, 0.5],
+    }
+}
 
 /// One closed boundary curve.
 ///
 /// # Validity
 /// At least 3 points, no two consecutive points equal and no three
-/// consecutive points collinear (edges are merged). Edges are horizontal,
-/// vertical or at 45°. The material is always on the same side
+/// consecutive points collinear (edges are merged). Edges run along cell
+/// edges of `lattice` (horizontal, vertical or at 45° on `square` and
+/// `tri4`; at multiples of 60° on `tri3`, of 60° plus 30° on `hex`). The material is always on the same side
 /// ([`Loop::is_hole`] tells which way round the curve goes). A curve may
 /// touch itself at a vertex where two corners of the material meet; it is
 /// then traced so that each corner is turned round on its own.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Loop {
     points: Vec<HalfPoint>,
+    lattice: LatticeKind,
 }
 
 impl Loop {
-    /// The corners in half units.
+    /// The corners in grid units.
     pub fn points(&self) -> &[HalfPoint] {
         &self.points
     }
 
-    /// The corners in lattice units.
+    /// The corners in the plane, in lattice units (the side of a square or
+    /// triangle, the distance between hexagon centres).
     pub fn points_f64(&self) -> Vec<[f64; 2]> {
+        let u = grid_unit(self.lattice);
         self.points
             .iter()
-            .map(|p| [p[0] as f64 / 2.0, p[1] as f64 / 2.0])
+            .map(|p| [p[0] as f64 * u[0], p[1] as f64 * u[1]])
             .collect()
     }
 
-    /// Twice the signed area in half units squared (shoelace, image
+    /// Twice the signed area in grid units squared (shoelace, image
     /// orientation): positive for an outer boundary, negative for a hole.
     pub fn doubled_area(&self) -> i64 {
         let n = self.points.len();
@@ -70,6 +89,8 @@ impl Outline {
     /// The outline of `cells` (any 2D lattice; `cubic` cells are read as
     /// squares `(x, y)` and their `z` ignored).
     pub fn of_cells(lattice: LatticeKind, cells: &[Cell]) -> Outline {
+        let unit = grid_unit(lattice);
+        let dir_index = |a: HalfPoint, b: HalfPoint| direction(unit, a, b);
         let mut edges: HashMap<(HalfPoint, HalfPoint), i32> = HashMap::new();
         for &c in cells {
             let poly = cell_polygon(lattice, c);
@@ -129,6 +150,7 @@ impl Outline {
             }
             loops.push(Loop {
                 points: merge_collinear(pts),
+                lattice,
             });
         }
         loops.sort_by_key(|l| std::cmp::Reverse(l.doubled_area()));
@@ -140,7 +162,19 @@ impl Outline {
         &self.loops
     }
 
-    /// The bounding box `[min, max]` in half units.
+    /// The bounding box `[min, max]` in the plane, in lattice units.
+    pub fn bounds_f64(&self) -> Option<[[f64; 2]; 2]> {
+        let mut it = self.loops.iter().flat_map(|l| l.points_f64());
+        let first = it.next()?;
+        Some(it.fold([first, first], |[lo, hi], p| {
+            [
+                [lo[0].min(p[0]), lo[1].min(p[1])],
+                [hi[0].max(p[0]), hi[1].max(p[1])],
+            ]
+        }))
+    }
+
+    /// The bounding box `[min, max]` in grid units.
     pub fn bounds(&self) -> Option<[HalfPoint; 2]> {
         let mut it = self.loops.iter().flat_map(|l| l.points.iter());
         let first = *it.next()?;
@@ -153,10 +187,27 @@ impl Outline {
     }
 }
 
-/// The polygon of one cell in half units, in the orientation that gives a
+/// The polygon of one cell in grid units, in the orientation that gives a
 /// positive shoelace area.
 pub fn cell_polygon(lattice: LatticeKind, [x, y, t]: Cell) -> Vec<HalfPoint> {
-    let (x, y) = (2 * x as i64, 2 * y as i64);
+    let (xi, yi) = (x as i64, y as i64);
+    match lattice {
+        // Row y between the lines y and y + 1; triangle x spans 2x..2x + 2.
+        LatticeKind::Tri3 if (x + y).rem_euclid(2) == 0 => {
+            return vec![[xi + 1, yi], [xi + 2, yi + 1], [xi, yi + 1]];
+        }
+        LatticeKind::Tri3 => return vec![[xi, yi], [xi + 2, yi], [xi + 1, yi + 1]],
+        // Centre (x + (y mod 2)/2, y·h): [2x + y mod 2, 3y] in grid units.
+        LatticeKind::Hex => {
+            let c = [2 * xi + yi.rem_euclid(2), 3 * yi];
+            return [[0, -2], [1, -1], [1, 1], [0, 2], [-1, 1], [-1, -1]]
+                .iter()
+                .map(|d| [c[0] + d[0], c[1] + d[1]])
+                .collect();
+        }
+        _ => {}
+    }
+    let (x, y) = (2 * xi, 2 * yi);
     let (tl, tr, br, bl, c) = (
         [x, y],
         [x + 2, y],
@@ -173,27 +224,22 @@ pub fn cell_polygon(lattice: LatticeKind, [x, y, t]: Cell) -> Vec<HalfPoint> {
     }
 }
 
-/// The direction of `a -> b` as a multiple of 45° (0 = +x, 2 = +y).
-fn dir_index(a: HalfPoint, b: HalfPoint) -> i32 {
-    let d = [(b[0] - a[0]).signum(), (b[1] - a[1]).signum()];
-    match d {
-        [1, 0] => 0,
-        [1, 1] => 1,
-        [0, 1] => 2,
-        [-1, 1] => 3,
-        [-1, 0] => 4,
-        [-1, -1] => 5,
-        [0, -1] => 6,
-        _ => 7,
-    }
+/// The direction of `a -> b` in the plane (whose grid unit is `unit`), in
+/// thousandths of a degree from +x toward +y (edge directions are multiples
+/// of 15°, so rounding never merges two of them).
+fn direction(unit: [f64; 2], a: HalfPoint, b: HalfPoint) -> i64 {
+    let dx = (b[0] - a[0]) as f64 * unit[0];
+    let dy = (b[1] - a[1]) as f64 * unit[1];
+    (dy.atan2(dx).to_degrees() * 1000.0).round() as i64
 }
 
-/// The turn from direction `a` to `b` in steps of 45°, in `-3..=4`; positive
-/// turns toward the material (which lies on the `+90°` side of every edge).
-fn turn(a: i32, b: i32) -> i32 {
-    let t = (b - a).rem_euclid(8);
-    if t > 4 {
-        t - 8
+/// The turn from direction `a` to `b` (thousandths of a degree), in
+/// `(-180°, 180°]`; positive turns toward the material (which lies on the
+/// `+90°` side of every edge).
+fn turn(a: i64, b: i64) -> i64 {
+    let t = (b - a).rem_euclid(360_000);
+    if t > 180_000 {
+        t - 360_000
     } else {
         t
     }
@@ -207,7 +253,9 @@ fn merge_collinear(pts: Vec<HalfPoint>) -> Vec<HalfPoint> {
             let a = pts[(i + n - 1) % n];
             let b = pts[i];
             let c = pts[(i + 1) % n];
-            dir_index(a, b) != dir_index(b, c)
+            let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
+            // Straight on: parallel and the same way.
+            !(u[0] * v[1] - u[1] * v[0] == 0 && u[0] * v[0] + u[1] * v[1] > 0)
         })
         .map(|i| pts[i])
         .collect();

@@ -171,17 +171,11 @@ fn decode(bytes: &[u8], invert: bool) -> Result<Volume, RenderError> {
     })
 }
 
-/// Turns pictures into a figure: one picture for `square` and `tri4`, one
-/// per z layer (bottom first) for `cubic`.
+/// Turns pictures into a figure: one picture for `square`, `tri4`, `tri3`
+/// and `hex`, one per z layer (bottom first) for `cubic`.
 pub fn rasterize(pictures: &[&[u8]], opts: &RasterOptions) -> Result<Rasterized, RenderError> {
     if pictures.is_empty() {
         return Err(RenderError::BadOption("no picture given".into()));
-    }
-    if matches!(opts.lattice, LatticeKind::Tri3 | LatticeKind::Hex) {
-        return Err(RenderError::BadOption(format!(
-            "rasterizing onto the {} lattice is not supported yet",
-            opts.lattice
-        )));
     }
     if opts.lattice != LatticeKind::Cubic && pictures.len() > 1 {
         return Err(RenderError::BadOption(format!(
@@ -233,6 +227,9 @@ fn coverage(
     s: f64,
     size: [usize; 3],
 ) -> Vec<(Cell, f64)> {
+    if matches!(lattice, LatticeKind::Tri3 | LatticeKind::Hex) {
+        return coverage_plane(vol, lattice, origin, s, size);
+    }
     let m = 8usize;
     let mz = if vol.z_scaled { 4 } else { 1 };
     let mut out = Vec::new();
@@ -292,6 +289,73 @@ fn coverage(
                         out.push((cell, f));
                     }
                 }
+            }
+        }
+    }
+    out
+}
+
+/// The coverage of `tri3` triangles or `hex` hexagons (side, or distance
+/// between centres, `s` pixels) over a picture whose ink box starts at
+/// `origin` and spans `size` squares of `s` pixels: every cell is sampled on
+/// a 10×10 grid over its bounding box, keeping the samples inside it.
+fn coverage_plane(
+    vol: &Volume,
+    lattice: LatticeKind,
+    origin: [f64; 3],
+    s: f64,
+    size: [usize; 3],
+) -> Vec<(Cell, f64)> {
+    let h = 3f64.sqrt() / 2.0;
+    let rows = (size[1] as f64 / h).ceil() as usize + 1;
+    let (cols, off) = if lattice == LatticeKind::Tri3 {
+        (2 * size[0] + 1, [0.0, 0.0])
+    } else {
+        // Hexagon (0, 0) reaches half a cell left of and 2h/3 above its centre.
+        (size[0] + 1, [0.5, 2.0 * h / 3.0])
+    };
+    let unit = crate::outline::grid_unit(lattice);
+    let m = 10usize;
+    let mut out = Vec::new();
+    for cy in 0..rows {
+        for cx in 0..cols {
+            let cell = [cx as i32, cy as i32, 0];
+            let poly: Vec<[f64; 2]> = crate::outline::cell_polygon(lattice, cell)
+                .iter()
+                .map(|p| [p[0] as f64 * unit[0], p[1] as f64 * unit[1]])
+                .collect();
+            let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
+            for p in &poly {
+                for d in 0..2 {
+                    lo[d] = lo[d].min(p[d]);
+                    hi[d] = hi[d].max(p[d]);
+                }
+            }
+            // Positive orientation: inside is left of no edge.
+            let inside = |q: [f64; 2]| {
+                (0..poly.len()).all(|k| {
+                    let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
+                    (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]) >= 0.0
+                })
+            };
+            let (mut sum, mut cnt) = (0.0f64, 0usize);
+            for a in 0..m {
+                for b in 0..m {
+                    let q = [
+                        lo[0] + (a as f64 + 0.5) / m as f64 * (hi[0] - lo[0]),
+                        lo[1] + (b as f64 + 0.5) / m as f64 * (hi[1] - lo[1]),
+                    ];
+                    if inside(q) {
+                        let px = origin[0] + (q[0] + off[0]) * s;
+                        let py = origin[1] + (q[1] + off[1]) * s;
+                        sum += vol.at(px, py, 0.0) as f64;
+                        cnt += 1;
+                    }
+                }
+            }
+            let f = sum / cnt.max(1) as f64;
+            if f > 0.0 {
+                out.push((cell, f));
             }
         }
     }
@@ -500,14 +564,16 @@ pub(crate) fn sample(
         return Err(RenderError::BadOption("--cells must be at least 1".into()));
     }
     // The scale at which the ink's area is n cells.
-    let per_cell = if lattice == LatticeKind::Tri4 {
-        4.0
-    } else {
-        1.0
+    // The area of a cell, in squares of the cell's edge (or centre distance).
+    let cell_area = match lattice {
+        LatticeKind::Tri4 => 0.25,
+        LatticeKind::Tri3 => 3f64.sqrt() / 4.0,
+        LatticeKind::Hex => 3f64.sqrt() / 2.0,
+        LatticeKind::Square | LatticeKind::Cubic => 1.0,
     };
     let total: f64 = vol.ink.iter().map(|v| *v as f64).sum();
     let dims = if vol.z_scaled { 3.0 } else { 2.0 };
-    let s0 = (total / (n as f64 / per_cell)).powf(1.0 / dims);
+    let s0 = (total / (n as f64 * cell_area)).powf(1.0 / dims);
     // Cells much smaller than a sample carry no information.
     let finest = if vol.z_scaled { 1.0 } else { 0.5 };
     if s0 < finest {

@@ -55,12 +55,6 @@ impl Scene {
                 )));
             }
         }
-        if matches!(d.lattice, LatticeKind::Tri3 | LatticeKind::Hex) {
-            return Err(RenderError::BadOption(format!(
-                "drawing the {} lattice is not supported yet",
-                d.lattice
-            )));
-        }
         let two_d = d.lattice != LatticeKind::Cubic;
         let outlines = if two_d {
             d.pieces
@@ -186,8 +180,21 @@ impl Scene {
     }
 }
 
-/// The centre of a 2D cell in lattice units (centroid for triangles).
+/// The centre of a 2D cell in lattice units (centroid for triangles), in the
+/// plane of [`Outline`]'s points.
 pub fn cell_centre(lattice: LatticeKind, [x, y, t]: Cell) -> [f64; 2] {
+    let h = 3f64.sqrt() / 2.0;
+    match lattice {
+        LatticeKind::Tri3 => {
+            let up = (x + y).rem_euclid(2) == 0;
+            let dy = if up { 2.0 / 3.0 } else { 1.0 / 3.0 };
+            return [(x as f64 + 1.0) / 2.0, (y as f64 + dy) * h];
+        }
+        LatticeKind::Hex => {
+            return [x as f64 + y.rem_euclid(2) as f64 / 2.0, y as f64 * h];
+        }
+        _ => {}
+    }
     let (x, y) = (x as f64, y as f64);
     if lattice == LatticeKind::Tri4 {
         let off = [

@@ -87,36 +87,31 @@ fn title(x: f64, y: f64, text: &str) -> Item {
     }
 }
 
-/// Loops of an outline in pixels: half units mapped by `(p - lo) / 2 * s + at`.
-fn place(o: &Outline, lo: [i64; 2], s: f64, at: [f64; 2]) -> Vec<Vec<[f64; 2]>> {
+/// Loops of an outline in pixels: plane points mapped by `(p - lo) * s + at`.
+fn place(o: &Outline, lo: [f64; 2], s: f64, at: [f64; 2]) -> Vec<Vec<[f64; 2]>> {
     o.loops()
         .iter()
         .map(|l| {
-            l.points()
+            l.points_f64()
                 .iter()
-                .map(|p| {
-                    [
-                        at[0] + (p[0] - lo[0]) as f64 / 2.0 * s,
-                        at[1] + (p[1] - lo[1]) as f64 / 2.0 * s,
-                    ]
-                })
+                .map(|p| [at[0] + (p[0] - lo[0]) * s, at[1] + (p[1] - lo[1]) * s])
                 .collect()
         })
         .collect()
 }
 
 fn flat_figures(scene: &Scene, opts: &ViewOptions) -> (f64, f64, Vec<Item>) {
-    let bounds: Vec<[[i64; 2]; 2]> = (0..scene.figure_count())
+    let bounds: Vec<[[f64; 2]; 2]> = (0..scene.figure_count())
         .map(|f| {
             scene
                 .figure_outline(f)
-                .bounds()
+                .bounds_f64()
                 .expect("figures have cells")
         })
         .collect();
     let extent = bounds
         .iter()
-        .map(|[lo, hi]| ((hi[0] - lo[0]).max(hi[1] - lo[1]) / 2) as f64)
+        .map(|[lo, hi]| (hi[0] - lo[0]).max(hi[1] - lo[1]).floor())
         .fold(1.0, f64::max);
     let s = opts
         .cell_px
@@ -146,8 +141,8 @@ fn flat_figures(scene: &Scene, opts: &ViewOptions) -> (f64, f64, Vec<Item>) {
             for i in 0..scene.piece_count() {
                 let c = scene.label_point(f, i);
                 items.push(Item::Text {
-                    x: at[0] + (c[0] - lo[0] as f64 / 2.0) * s,
-                    y: at[1] + (c[1] - lo[1] as f64 / 2.0) * s + 0.35 * size,
+                    x: at[0] + (c[0] - lo[0]) * s,
+                    y: at[1] + (c[1] - lo[1]) * s + 0.35 * size,
                     size,
                     anchor: Anchor::Middle,
                     text: scene.label(i),
@@ -155,8 +150,8 @@ fn flat_figures(scene: &Scene, opts: &ViewOptions) -> (f64, f64, Vec<Item>) {
                 });
             }
         }
-        let w = (hi[0] - lo[0]) as f64 / 2.0 * s;
-        let h = (hi[1] - lo[1]) as f64 / 2.0 * s;
+        let w = (hi[0] - lo[0]) * s;
+        let h = (hi[1] - lo[1]) * s;
         max_h = max_h.max(h);
         x += w.max(120.0) + gap;
     }

@@ -85,6 +85,27 @@ const CUBIC_STEP: Case = Case {
       {"name":"b.txt","pieces":[[[0,0,0],[1,0,0],[1,1,0]],[[0,0,1],[1,0,1]]]}]}"#,
 };
 
+const TRI3: Case = Case {
+    name: "tri3",
+    lattice: LatticeKind::Tri3,
+    // A hexagon of six triangles into a parallelogram: two trapezoids, one
+    // turned upside down (up triangles become down ones).
+    figures: ["###\n###\n", "######\n"],
+    solution: r#"{"format":"dissection-solution/1","lattice":"tri3","mirror":true,"figures":[
+      {"name":"hexagon.txt","pieces":[[[0,1],[1,1],[2,1]],[[0,0],[1,0],[2,0]]]},
+      {"name":"parallelogram.txt","pieces":[[[3,0],[4,0],[5,0]],[[0,0],[1,0],[2,0]]]}]}"#,
+};
+
+const HEX: Case = Case {
+    name: "hex",
+    lattice: LatticeKind::Hex,
+    // A hexagon of seven hexagons (odd rows shifted right) into a trapezoid.
+    figures: [".##\n###\n.##\n", "####\n###\n"],
+    solution: r#"{"format":"dissection-solution/1","lattice":"hex","mirror":true,"figures":[
+      {"name":"hexagon.txt","pieces":[[[1,0],[1,1],[2,0],[2,1],[2,2]],[[0,1],[1,2]]]},
+      {"name":"trapezoid.txt","pieces":[[[1,0],[1,1],[2,0],[2,1],[3,0]],[[0,0],[0,1]]]}]}"#,
+};
+
 fn scene(c: &Case) -> Scene {
     Scene::from_solution(c.solution, &c.figures).unwrap_or_else(|e| panic!("{}: {e}", c.name))
 }
@@ -120,7 +141,16 @@ fn check_golden_text(name: &str, text: &str) {
 
 #[test]
 fn the_fixtures_are_valid_dissections() {
-    for c in [&SQUARE, &RING, &PINCH, &TRI4, &CUBIC, &CUBIC_STEP] {
+    for c in [
+        &SQUARE,
+        &RING,
+        &PINCH,
+        &TRI4,
+        &CUBIC,
+        &CUBIC_STEP,
+        &TRI3,
+        &HEX,
+    ] {
         let s = scene(c);
         assert_eq!(s.lattice(), c.lattice);
         assert_eq!(s.figure_count(), 2);
@@ -129,7 +159,7 @@ fn the_fixtures_are_valid_dissections() {
 
 #[test]
 fn svg_views_match_their_snapshots() {
-    for c in [&SQUARE, &RING, &TRI4, &CUBIC] {
+    for c in [&SQUARE, &RING, &TRI4, &CUBIC, &TRI3, &HEX] {
         let s = scene(c);
         check_golden_text(&format!("{}.svg", c.name), &svg::render(&s));
     }
@@ -137,7 +167,7 @@ fn svg_views_match_their_snapshots() {
 
 #[test]
 fn cut_sheets_match_their_snapshots() {
-    for c in [&SQUARE, &TRI4] {
+    for c in [&SQUARE, &TRI4, &TRI3, &HEX] {
         let s = scene(c);
         let sheet = cut_sheet::render(&s, &PhysicalOptions::default()).unwrap();
         assert!(sheet.contains("width=\""), "{sheet}");
@@ -185,6 +215,63 @@ fn piece_outlines_are_merged_polygons() {
     assert_eq!(half.matches('L').count(), 2, "{half}");
 }
 
+/// The corners of the first path drawn in a colour, in pixels.
+fn first_path_corners(svg: &str, fill: &str) -> Vec<[f64; 2]> {
+    let line = svg
+        .lines()
+        .find(|l| l.starts_with("<path d=\"M") && l.contains(fill))
+        .unwrap_or_else(|| panic!("no {fill} path"));
+    let d = line.split('"').nth(1).unwrap();
+    d.split(['M', 'L', 'Z'])
+        .filter(|t| !t.trim().is_empty())
+        .map(|t| {
+            let v: Vec<f64> = t
+                .split([' ', ','])
+                .filter(|x| !x.is_empty())
+                .map(|x| x.parse().unwrap())
+                .collect();
+            [v[0], v[1]]
+        })
+        .collect()
+}
+
+#[test]
+fn tri3_and_hex_pieces_are_true_triangles_and_hexagons() {
+    let side = |p: &[[f64; 2]], k: usize| {
+        let (a, b) = (p[k], p[(k + 1) % p.len()]);
+        ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt()
+    };
+    // The hexagon's top trapezoid: 4 corners, sides 1, 1, 2, 1 (equilateral
+    // triangles, so the slanted sides are as long as the short base).
+    let svg = svg::render(&scene(&TRI3));
+    let p = first_path_corners(&svg, "fill=\"#e6615c\"");
+    assert_eq!(p.len(), 4, "{p:?}");
+    let mut sides: Vec<f64> = (0..4).map(|k| side(&p, k)).collect();
+    sides.sort_by(f64::total_cmp);
+    for k in 0..3 {
+        assert!((sides[k] - sides[0]).abs() < 0.02 * sides[0], "{sides:?}");
+    }
+    assert!(
+        (sides[3] - 2.0 * sides[0]).abs() < 0.02 * sides[0],
+        "{sides:?}"
+    );
+    // The outline of five hexagons: every side of the same length, 60° or
+    // 120° turns only.
+    let svg = svg::render(&scene(&HEX));
+    let p = first_path_corners(&svg, "fill=\"#e6615c\"");
+    let unit = (0..p.len()).map(|k| side(&p, k)).fold(f64::MAX, f64::min);
+    for k in 0..p.len() {
+        let l = side(&p, k);
+        let ratio = l / unit;
+        assert!(
+            (ratio - ratio.round()).abs() < 0.02,
+            "side {l} of {unit}: {p:?}"
+        );
+    }
+    // 5 hexagons in a compact clump: the outline has 14 or more corners.
+    assert!(p.len() >= 14, "{p:?}");
+}
+
 /// Counts pixels whose colour differs by more than 8 in any channel.
 fn differing_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
     if a.dimensions() != b.dimensions() {
@@ -198,7 +285,7 @@ fn differing_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
 
 #[test]
 fn png_views_match_their_reference_pictures() {
-    for c in [&SQUARE, &TRI4, &CUBIC] {
+    for c in [&SQUARE, &TRI4, &CUBIC, &TRI3, &HEX] {
         let bytes = png::render(&scene(c)).unwrap();
         let name = format!("{}.png", c.name);
         let path = golden_path(&name);
@@ -264,10 +351,11 @@ fn check_meshes(c: &Case, opts: &PhysicalOptions) {
         }
         // Coplanar faces are merged: far fewer triangles than cell faces.
         let cells = s.area(i);
-        let per_cell = if c.lattice == LatticeKind::Cubic {
-            12
-        } else {
-            8
+        let per_cell = match c.lattice {
+            LatticeKind::Cubic => 12,
+            // Six walls and two faces of four triangles per hexagon.
+            LatticeKind::Hex => 20,
+            _ => 8,
         };
         assert!(m.triangles().len() <= per_cell * cells, "{} {name}", c.name);
     }
@@ -281,7 +369,7 @@ fn every_stl_is_closed_and_manifold_with_the_right_volume() {
             thickness_mm: 3.0,
             clearance_mm: clearance,
         };
-        for c in [&SQUARE, &RING, &TRI4, &CUBIC, &CUBIC_STEP] {
+        for c in [&SQUARE, &RING, &TRI4, &CUBIC, &CUBIC_STEP, &TRI3, &HEX] {
             check_meshes(c, &opts);
         }
         // A piece touching itself at a corner: only with a clearance do its
@@ -359,6 +447,11 @@ fn ldraw_models_have_one_part_per_merged_brick_inside_one_piece() {
             assert_eq!(seen.len(), owner.len());
         }
     }
+    for c in [&TRI3, &HEX] {
+        let e = ldraw::render(&scene(c), PartKind::Plate).unwrap_err();
+        assert!(e.to_string().contains("square and cubic"), "{e}");
+        assert!(e.to_string().contains("--format stl"), "{e}");
+    }
     let e = ldraw::render(&scene(&TRI4), PartKind::Plate).unwrap_err();
     assert!(e.to_string().contains("square and cubic"), "{e}");
 }
@@ -392,6 +485,10 @@ fn rasterize_a_disc_hits_the_exact_cell_count() {
         (LatticeKind::Square, 145),
         (LatticeKind::Tri4, 128),
         (LatticeKind::Tri4, 129),
+        (LatticeKind::Tri3, 150),
+        (LatticeKind::Tri3, 151),
+        (LatticeKind::Hex, 61),
+        (LatticeKind::Hex, 62),
     ] {
         let opts = RasterOptions {
             lattice,
