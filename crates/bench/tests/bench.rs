@@ -85,6 +85,20 @@ fn shared_manifest_parses_and_every_instance_loads() {
 }
 
 #[test]
+fn the_projects_own_instances_load() {
+    // examples/instances: a voxelized torus mesh (make_torus.py) to a cuboid.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/instances");
+    let m = Manifest::load(&root).expect("examples manifest");
+    let torus = m.get("torus512-to-slab16x8x4").expect("torus instance");
+    let figures = torus.load_figures(m.root()).expect("torus loads");
+    assert_eq!(torus.lattice(), LatticeKind::Cubic);
+    assert!(figures.iter().all(|f| f.len() == 512));
+    // One closed ring: connected, and the slab is a full 16x8x4 box.
+    assert_eq!(figures[0].stats().components, 1);
+    assert_eq!(figures[1].stats().max, [15, 7, 3]);
+}
+
+#[test]
 fn manifest_json_error_names_file_line_and_column() {
     let path = Path::new("some/dir/manifest.json");
     let text = "[\n {\"name\": \"a\",\n  \"lattice\": square}\n]";
