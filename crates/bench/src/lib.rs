@@ -13,6 +13,7 @@ pub mod paper;
 pub mod report;
 pub mod run;
 pub mod scale;
+pub mod schedule;
 
 use std::path::PathBuf;
 use std::time::Duration;
