@@ -25,5 +25,5 @@ mod verified;
 pub use options::{OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS};
 pub use repair::ExactRepair;
 pub use report::{End, Improvement, LowerBound, Report, Source};
-pub use run::{run, EngineError, EngineEvent, EngineObserver};
+pub use run::{run, run_with, EngineError, EngineEvent, EngineObserver};
 pub use verified::Verified;

@@ -7,7 +7,7 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use dissect_core::solver::{
-    solve, solve_anytime, Event, Observer, Outcome, Repair, SolveError, Via,
+    solve_anytime_with, solve_with, Event, Executor, Observer, Outcome, Repair, SolveError, Via,
 };
 use dissect_core::Figure;
 use dissect_exact::{
@@ -211,6 +211,21 @@ pub fn run(
     stop: &AtomicBool,
     observer: &dyn EngineObserver,
 ) -> Result<Report, EngineError> {
+    run_with(figures, names, options, stop, observer, None)
+}
+
+/// [`run`], with the heuristic's explorations run by `executor` (`None`:
+/// the local thread pool; `dissect.ray` sends them to a Ray cluster). An
+/// executor that returns what [`dissect_core::solver::Explorer::explore`]
+/// returns gives the same answer as [`run`].
+pub fn run_with(
+    figures: &[Figure],
+    names: &[String],
+    options: &RunOptions,
+    stop: &AtomicBool,
+    observer: &dyn EngineObserver,
+    executor: Option<&dyn Executor>,
+) -> Result<Report, EngineError> {
     dissect_core::solver::check_figures(figures)?;
     let config = options.config();
     let lattice = figures[0].lattice();
@@ -303,14 +318,17 @@ pub fn run(
         let heuristic = heuristic_on.then(|| {
             s.spawn(|| {
                 let r = match strategy {
-                    Strategy::Paper => solve(figures, &solver_options, &heuristic_stop, &shared),
-                    _ => solve_anytime(
+                    Strategy::Paper => {
+                        solve_with(figures, &solver_options, &heuristic_stop, &shared, executor)
+                    }
+                    _ => solve_anytime_with(
                         figures,
                         &solver_options,
                         &anytime,
                         &heuristic_stop,
                         &shared,
                         repairer,
+                        executor,
                     ),
                 };
                 heuristic_done.store(true, Ordering::SeqCst);
