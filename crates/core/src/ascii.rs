@@ -12,12 +12,10 @@ pub fn piece_letter(i: usize) -> char {
     LETTERS.get(i).map_or('*', |b| *b as char)
 }
 
-/// A distinct ANSI 256-colour background for piece `i`.
+/// The ANSI 256-colour background of piece `i` (derived from the one
+/// palette, [`crate::palette`]).
 fn colour(i: usize) -> u8 {
-    const PALETTE: [u8; 16] = [
-        196, 46, 33, 226, 201, 51, 208, 129, 118, 39, 214, 165, 84, 27, 220, 160,
-    ];
-    PALETTE[i % PALETTE.len()]
+    crate::palette::piece_ansi256(i)
 }
 
 /// Draws one figure whose cells are split into `pieces` (`pieces[i]` gets
@@ -318,7 +316,7 @@ BB\\DDDEEE
         let p = pieces_of(LatticeKind::Square, "#\n", &["A"]);
         assert_eq!(
             draw(LatticeKind::Square, &p, true),
-            "\x1b[48;5;196m\x1b[30mA\x1b[0m\n"
+            "\x1b[48;5;167m\x1b[30mA\x1b[0m\n"
         );
     }
 }
