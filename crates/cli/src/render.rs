@@ -28,8 +28,9 @@ pub struct RenderArgs {
     /// The figures, in the solution's order (the solution is checked against them).
     #[arg(long, num_args = 1.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
-    /// svg or png: a picture of every figure; stl: one mesh per piece; ldraw: one LEGO model per figure.
-    #[arg(long, default_value = "svg", value_parser = ["svg", "png", "stl", "ldraw"])]
+    /// svg or png: a picture of every figure; stl: one mesh per piece; ldraw: one LEGO model per figure;
+    /// html: one self-contained page with the pieces' motion (and a 3D view for cubic).
+    #[arg(long, default_value = "svg", value_parser = ["svg", "png", "stl", "ldraw", "html"])]
     pub format: String,
     /// Output: a file (OUT.svg / OUT.png) or a directory (created when missing).
     #[arg(short = 'o', long = "output", value_name = "OUT")]
@@ -145,7 +146,10 @@ pub fn run(args: RenderArgs) -> Result<Status> {
     };
     let out = &args.output;
     let ext = out.extension().and_then(|e| e.to_str()).unwrap_or("");
-    let single_file = matches!((args.format.as_str(), ext), ("svg", "svg") | ("png", "png"));
+    let single_file = matches!(
+        (args.format.as_str(), ext),
+        ("svg", "svg") | ("png", "png") | ("html", "html" | "htm")
+    );
     let dir = if single_file {
         out.parent().map(Path::to_path_buf).unwrap_or_default()
     } else {
@@ -186,6 +190,15 @@ pub fn run(args: RenderArgs) -> Result<Status> {
             let png = dissect_render::png::render_with(&scene, &view)
                 .map_err(|e| about(&args.solution, e))?;
             put(path, &png)?;
+        }
+        "html" => {
+            let path = if single_file {
+                out.clone()
+            } else {
+                dir.join(format!("{stem}.html"))
+            };
+            let page = dissect_render::html::page(&scene).map_err(|e| about(&args.solution, e))?;
+            put(path, page.as_bytes())?;
         }
         "stl" => {
             let files = dissect_render::stl::render(&scene, &physical)

@@ -11,6 +11,7 @@ pub mod figure;
 pub mod io;
 pub mod lattice;
 pub(crate) mod matching;
+pub mod motion;
 pub mod palette;
 pub(crate) mod piece;
 pub mod solver;

@@ -14,6 +14,7 @@
 
 #![forbid(unsafe_code)]
 
+pub mod animation;
 pub mod colour;
 pub mod cut_sheet;
 
@@ -21,6 +22,7 @@ pub mod drawing;
 mod ear_clipping;
 mod error;
 mod font;
+pub mod html;
 pub mod ldraw;
 pub mod mesh;
 pub mod outline;
