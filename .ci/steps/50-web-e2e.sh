@@ -2,7 +2,8 @@
 # End-to-end test of the browser studio: `dissect serve` on a free port,
 # crates/web/e2e/studio.test.mjs in Debian's headless chromium
 # (playwright-core), solutions checked with ../shared/tools/verify.py.
-# The test writes docs/studio-editor.png and docs/studio-solved.png.
+# The tests write docs/studio-*.png and docs/motion-*.png (the motion
+# player and the shared HTML page: crates/web/e2e/motion.test.mjs).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 root=$PWD
@@ -29,4 +30,4 @@ echo "studio at $url"
 verify=${DISSECT_VERIFY:-$root/../shared/tools/verify.py}
 cd crates/web/e2e
 DISSECT_URL=$url DISSECT_VERIFY=$verify DISSECT_DOCS=$root/docs \
-  timeout 300 node --test --test-concurrency=1 studio.test.mjs
+  timeout 300 node --test --test-concurrency=1 studio.test.mjs motion.test.mjs

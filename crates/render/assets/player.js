@@ -394,10 +394,10 @@ export function createPlayer(host, data, options = {}) {
         }
       }
     }
-    const margin = 16;
-    const k = st.zoom * Math.min((w - 2 * margin) / (hi[0] - lo[0]), (h - 2 * margin) / (hi[1] - lo[1]));
+    const margin = 16, names = 22; // room below for the figures' names
+    const k = st.zoom * Math.min((w - 2 * margin) / (hi[0] - lo[0]), (h - 2 * margin - names) / (hi[1] - lo[1]));
     const ox = w / 2 - k * (lo[0] + hi[0]) / 2;
-    const oy = h / 2 - k * (lo[1] + hi[1]) / 2;
+    const oy = (h - names) / 2 - k * (lo[1] + hi[1]) / 2;
     view = { k, ox, oy, r, u, e };
     const px = (p) => [ox + k * dot(p, r), oy - k * dot(p, u)];
     const light = [0.35, 0.55, 0.76];
@@ -441,10 +441,15 @@ export function createPlayer(host, data, options = {}) {
     g.font = '13px system-ui, sans-serif';
     g.textAlign = 'center';
     for (const [f, o] of off) {
+      // Under the lowest corner of the figure's box on screen.
       const fig = data.figures[f];
-      const base = [(fig.min[0] + fig.max[0]) / 2 + o[0], fig.max[1] + o[1], fig.min[2] + o[2]];
-      const [x, y] = px(base);
-      g.fillText(fig.name, x, Math.min(h - 4, y + 16));
+      let bottom = -Infinity;
+      for (let c = 0; c < 8; c++) {
+        const p = [0, 1, 2].map((j) => ((c >> j) & 1 ? fig.max[j] : fig.min[j]) + o[j]);
+        bottom = Math.max(bottom, px(p)[1]);
+      }
+      const [x] = px([(fig.min[0] + fig.max[0]) / 2 + o[0], (fig.min[1] + fig.max[1]) / 2 + o[1], fig.min[2] + o[2]]);
+      g.fillText(fig.name, x, Math.min(h - 4, bottom + 16));
     }
   }
 

@@ -4,13 +4,12 @@
 const $ = (sel, root = document) => root.querySelector(sel);
 const $$ = (sel, root = document) => [...root.querySelectorAll(sel)];
 
-// Piece colours (distinct, light enough for dark outlines).
-export const PALETTE = [
-  '#e6194b', '#3cb44b', '#4363d8', '#ffe119', '#f58231', '#911eb4', '#42d4f4', '#f032e6',
-  '#bfef45', '#fabed4', '#469990', '#dcbeff', '#9a6324', '#fffac8', '#800000', '#aaffc3',
-  '#808000', '#ffd8b1', '#000075', '#a9a9a9',
-];
-export const pieceColour = (i) => PALETTE[i % PALETTE.length];
+// Piece colours: the one palette of dissect_core::palette, served by the
+// server as /palette.js (the same colours as SVG, PNG and the terminal).
+import { PALETTE, pieceColour } from '/palette.js';
+import { createPlayer } from '/player.js';
+
+export { PALETTE, pieceColour };
 
 const key = (x, y, t) => `${x},${y},${t}`;
 const unkey = (k) => k.split(',').map(Number);
@@ -716,12 +715,25 @@ function showResult() {
   redrawResult();
   $('#dl-cut').disabled = !state.exports.includes('cut-sheet') || r.lattice === 'cubic';
   $('#dl-ldraw').disabled = !state.exports.includes('ldraw') || r.lattice === 'tri4';
-  const v3 = $('#view3d');
-  v3.hidden = r.lattice !== 'cubic';
-  if (r.lattice === 'cubic') {
-    import('/view3d.js')
-      .then((m) => m.show(v3, sol, pieceColour))
-      .catch((e) => { v3.textContent = `3D view unavailable: ${e.message}`; });
+  showMotion(sol);
+}
+
+/** The motion player (and for cubic the 3D view): its data is made by the server (dissect-render). */
+async function showMotion(sol) {
+  const host = $('#motion');
+  host.textContent = '';
+  try {
+    const res = await fetch('/api/export/animation', {
+      method: 'POST',
+      headers: { 'content-type': 'application/json' },
+      body: JSON.stringify({ solution: sol }),
+    });
+    const data = await res.json();
+    if (!res.ok) throw new Error(data.error?.message || `HTTP ${res.status}`);
+    if (state.result?.solution !== sol) return; // a newer result is shown
+    state.player = createPlayer(host, data);
+  } catch (e) {
+    host.textContent = `motion view unavailable: ${e.message}`;
   }
 }
 
@@ -734,6 +746,7 @@ function redrawResult() {
     canvas._cs = parseFloat(canvas.style.width) > 0 ? cellSizeOfCanvas(canvas, r.lattice, pieces) : 1;
   });
   $$('#legend span').forEach((s) => s.classList.toggle('hot', Number(s.dataset.piece) === state.hot));
+  state.player?.highlight(state.hot);
 }
 
 function cellSizeOfCanvas(canvas, lattice, pieces) {
@@ -829,13 +842,14 @@ async function init() {
   $('#dl-cut').onclick = () => exportFile('cut-sheet');
   $('#dl-stl').onclick = () => exportFile('stl');
   $('#dl-ldraw').onclick = () => exportFile('ldraw');
+  $('#dl-html').onclick = () => exportFile('html');
   setLattice('square');
   renderFigures();
   updateUndo();
   try {
     const info = await api('GET', '/api/info');
     state.exports = info.exports;
-    const buttons = { svg: '#dl-svg', png: '#dl-png', 'cut-sheet': '#dl-cut', stl: '#dl-stl', ldraw: '#dl-ldraw' };
+    const buttons = { html: '#dl-html', svg: '#dl-svg', png: '#dl-png', 'cut-sheet': '#dl-cut', stl: '#dl-stl', ldraw: '#dl-ldraw' };
     for (const [format, sel] of Object.entries(buttons)) {
       if (!info.exports.includes(format)) {
         $(sel).disabled = true;

@@ -295,8 +295,8 @@ test('cubic: layers are edited apart; the solution turns in 3D', async () => {
   for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
   const out = execFileSync('python3', [VERIFY, '--lattice', 'cubic', '--solution', json, ...figs], { encoding: 'utf8' });
   assert.match(out, new RegExp(`valid: ${pieces} pieces`));
-  await page.waitForSelector('#view3d canvas');
-  const v3 = await page.locator('#view3d canvas').boundingBox();
+  await page.waitForSelector('#motion canvas');
+  const v3 = await page.locator('#motion canvas').boundingBox();
   await page.mouse.move(v3.x + v3.width / 2, v3.y + v3.height / 2);
   await page.mouse.down();
   await page.mouse.move(v3.x + v3.width / 2 + 80, v3.y + v3.height / 2 + 20, { steps: 5 });

@@ -1,7 +1,8 @@
 //! Downloads made by `dissect-render` from a solution: SVG and PNG views, a
 //! laser cut sheet (SVG, 2D lattices), STL meshes of the pieces (a ZIP with
 //! one file per piece) and LDraw LEGO models (a ZIP with one `.ldr` per
-//! figure; square and cubic lattices).
+//! figure; square and cubic lattices), the self-contained HTML page with the
+//! pieces' motion, and the motion player's data (`animation`, JSON).
 //!
 //! `POST /api/export/{format}` with `{"solution": <solution JSON object or
 //! text>, "cell_mm": .., "thickness_mm": .., "clearance_mm": .., "parts":
@@ -50,7 +51,15 @@ pub struct Download {
 }
 
 /// The formats `POST /api/export/{format}` knows.
-pub const FORMATS: &[&str] = &["svg", "png", "cut-sheet", "stl", "ldraw"];
+pub const FORMATS: &[&str] = &[
+    "svg",
+    "png",
+    "cut-sheet",
+    "stl",
+    "ldraw",
+    "html",
+    "animation",
+];
 
 fn render_error(e: RenderError) -> ApiError {
     match e {
@@ -138,6 +147,21 @@ pub fn export(format: &str, req: &ExportRequest, limits: &Limits) -> Result<Down
             content_type: "image/svg+xml",
             bytes: dissect_render::cut_sheet::render(&scene, &physical(req))
                 .map_err(render_error)?
+                .into_bytes(),
+        },
+        "html" => Download {
+            name: "dissection.html".into(),
+            content_type: "text/html; charset=utf-8",
+            bytes: dissect_render::html::page(&scene)
+                .map_err(render_error)?
+                .into_bytes(),
+        },
+        "animation" => Download {
+            name: "dissection-animation.json".into(),
+            content_type: "application/json",
+            bytes: dissect_render::animation::data(&scene)
+                .map_err(render_error)?
+                .to_string()
                 .into_bytes(),
         },
         "stl" => {

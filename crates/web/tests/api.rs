@@ -168,7 +168,8 @@ async fn the_page_and_its_assets_are_served() {
     for (uri, ty) in [
         ("/", "text/html"),
         ("/studio.js", "text/javascript"),
-        ("/vendor/three/three.module.js", "text/javascript"),
+        ("/player.js", "text/javascript"),
+        ("/palette.js", "text/javascript"),
     ] {
         let res = app
             .clone()
