@@ -29,8 +29,9 @@ pub struct RenderArgs {
     #[arg(long, num_args = 1.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
     /// svg or png: a picture of every figure; stl: one mesh per piece; ldraw: one LEGO model per figure;
-    /// html: one self-contained page with the pieces' motion (and a 3D view for cubic).
-    #[arg(long, default_value = "svg", value_parser = ["svg", "png", "stl", "ldraw", "html"])]
+    /// html: one self-contained page with the pieces' motion (and a 3D view for cubic);
+    /// steps: instructions to print, one SVG sheet per figure, one piece added per step.
+    #[arg(long, default_value = "svg", value_parser = ["svg", "png", "stl", "ldraw", "html", "steps"])]
     pub format: String,
     /// Output: a file (OUT.svg / OUT.png) or a directory (created when missing).
     #[arg(short = 'o', long = "output", value_name = "OUT")]
@@ -199,6 +200,11 @@ pub fn run(args: RenderArgs) -> Result<Status> {
             };
             let page = dissect_render::html::page(&scene).map_err(|e| about(&args.solution, e))?;
             put(path, page.as_bytes())?;
+        }
+        "steps" => {
+            for (name, svg) in dissect_render::steps::sheets(&scene) {
+                put(dir.join(name), svg.as_bytes())?;
+            }
         }
         "stl" => {
             let files = dissect_render::stl::render(&scene, &physical)

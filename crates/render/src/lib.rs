@@ -29,6 +29,7 @@ pub mod outline;
 pub mod png;
 pub mod rasterize;
 pub mod scene;
+pub mod steps;
 pub mod stl;
 pub mod svg;
 mod view;

@@ -27,6 +27,9 @@ pub struct Scene {
     pieces: Vec<Vec<Vec<Cell>>>,
     outlines: Vec<Vec<Outline>>,
     figure_outlines: Vec<Outline>,
+    /// `ids[i]`: the number of piece `i` in the whole dissection (its label
+    /// and colour); `0..n` except in a [`Scene::subset`].
+    ids: Vec<usize>,
 }
 
 impl Scene {
@@ -87,6 +90,7 @@ impl Scene {
             pieces: d.pieces.clone(),
             outlines,
             figure_outlines,
+            ids: (0..n).collect(),
         })
     }
 
@@ -158,12 +162,39 @@ impl Scene {
 
     /// The label of piece `i` (`A`, `B`, ...).
     pub fn label(&self, i: usize) -> String {
-        dissect_core::ascii::piece_letter(i).to_string()
+        dissect_core::ascii::piece_letter(self.ids[i]).to_string()
     }
 
     /// The colour of piece `i`.
     pub fn colour(&self, i: usize) -> Rgb {
-        piece_colour(i)
+        piece_colour(self.ids[i])
+    }
+
+    /// Figure `f` with only the pieces `pieces` (numbers of this scene, in
+    /// the order given; at least one), which keep their labels and colours:
+    /// a step of the figure's assembly.
+    pub fn subset(&self, f: usize, pieces: &[usize]) -> Scene {
+        let cells: Vec<Vec<Cell>> = pieces.iter().map(|&i| self.pieces[f][i].clone()).collect();
+        let two_d = !self.outlines.is_empty();
+        Scene {
+            lattice: self.lattice,
+            names: vec![self.names[f].clone()],
+            outlines: if two_d {
+                vec![pieces
+                    .iter()
+                    .map(|&i| self.outlines[f][i].clone())
+                    .collect()]
+            } else {
+                Vec::new()
+            },
+            figure_outlines: if two_d {
+                vec![Outline::of_cells(self.lattice, &cells.concat())]
+            } else {
+                Vec::new()
+            },
+            pieces: vec![cells],
+            ids: pieces.iter().map(|&i| self.ids[i]).collect(),
+        }
     }
 
     /// The number of cells of piece `i`.

@@ -100,22 +100,49 @@ fn place(o: &Outline, lo: [f64; 2], s: f64, at: [f64; 2]) -> Vec<Vec<[f64; 2]>> 
         .collect()
 }
 
-fn flat_figures(scene: &Scene, opts: &ViewOptions) -> (f64, f64, Vec<Item>) {
-    let bounds: Vec<[[f64; 2]; 2]> = (0..scene.figure_count())
+/// The figures' bounds in lattice units (2D lattices).
+fn flat_bounds(scene: &Scene) -> Vec<[[f64; 2]; 2]> {
+    (0..scene.figure_count())
         .map(|f| {
             scene
                 .figure_outline(f)
                 .bounds_f64()
                 .expect("figures have cells")
         })
-        .collect();
-    let extent = bounds
-        .iter()
-        .map(|[lo, hi]| (hi[0] - lo[0]).max(hi[1] - lo[1]).floor())
+        .collect()
+}
+
+/// Pixels per cell edge: `opts.cell_px`, or chosen from the largest figure.
+pub(crate) fn chosen_cell_px(scene: &Scene, opts: &ViewOptions) -> f64 {
+    if let Some(s) = opts.cell_px {
+        return s;
+    }
+    if scene.lattice() != LatticeKind::Cubic {
+        let extent = flat_bounds(scene)
+            .iter()
+            .map(|[lo, hi]| (hi[0] - lo[0]).max(hi[1] - lo[1]).floor())
+            .fold(1.0, f64::max);
+        return (360.0 / extent).round().clamp(8.0, 40.0);
+    }
+    let extent = (0..scene.figure_count())
+        .map(|f| {
+            let all: Vec<Cell> = (0..scene.piece_count())
+                .flat_map(|i| scene.cells(f, i).iter().copied())
+                .collect();
+            let span = |d: usize| {
+                let lo = all.iter().map(|c| c[d]).min().unwrap_or(0);
+                let hi = all.iter().map(|c| c[d]).max().unwrap_or(0);
+                (hi - lo + 1) as f64
+            };
+            span(0) + span(1) + span(2)
+        })
         .fold(1.0, f64::max);
-    let s = opts
-        .cell_px
-        .unwrap_or_else(|| (360.0 / extent).round().clamp(8.0, 40.0));
+    (300.0 / extent).round().clamp(6.0, 36.0)
+}
+
+fn flat_figures(scene: &Scene, opts: &ViewOptions) -> (f64, f64, Vec<Item>) {
+    let bounds = flat_bounds(scene);
+    let s = chosen_cell_px(scene, opts);
     let stroke = (s / 14.0).clamp(1.0, 2.5);
     let gap = (2.0 * s).max(40.0);
     let mut items = Vec::new();
@@ -219,22 +246,7 @@ fn cube_faces(
 }
 
 fn iso_figures(scene: &Scene, opts: &ViewOptions) -> (f64, f64, Vec<Item>) {
-    let extent = (0..scene.figure_count())
-        .map(|f| {
-            let all: Vec<Cell> = (0..scene.piece_count())
-                .flat_map(|i| scene.cells(f, i).iter().copied())
-                .collect();
-            let span = |d: usize| {
-                let lo = all.iter().map(|c| c[d]).min().unwrap_or(0);
-                let hi = all.iter().map(|c| c[d]).max().unwrap_or(0);
-                (hi - lo + 1) as f64
-            };
-            span(0) + span(1) + span(2)
-        })
-        .fold(1.0, f64::max);
-    let s = opts
-        .cell_px
-        .unwrap_or_else(|| (300.0 / extent).round().clamp(6.0, 36.0));
+    let s = chosen_cell_px(scene, opts);
     let stroke = (s / 24.0).clamp(0.5, 1.2);
     let mut items = Vec::new();
     let mut y = MARGIN;
