@@ -14,6 +14,7 @@
 
 #![forbid(unsafe_code)]
 
+pub mod bounds;
 pub mod colour;
 pub mod cut_sheet;
 
