@@ -3,6 +3,7 @@
 mod args;
 mod info;
 mod input;
+mod output;
 mod progress;
 mod prove;
 #[cfg(feature = "render")]
