@@ -23,10 +23,12 @@ pub const TARGETS: &[&str] = &["figure", "solution", "picture", "mesh", "http"];
 pub struct Rng(u64);
 
 impl Rng {
+    /// A generator started from `seed`.
     pub fn new(seed: u64) -> Rng {
         Rng(seed ^ 0x9E37_79B9_7F4A_7C15)
     }
 
+    /// The next 64 random bits.
     pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
@@ -40,6 +42,7 @@ impl Rng {
         (self.next_u64() % n.max(1) as u64) as usize
     }
 
+    /// One of `items` (not empty).
     pub fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {
         &items[self.below(items.len())]
     }
@@ -179,12 +182,15 @@ pub fn mutate(rng: &mut Rng, data: &mut Vec<u8>, others: &[Vec<u8>], max: usize)
 /// What a run did on one target.
 #[derive(Clone, Debug, Default)]
 pub struct Tally {
+    /// The target's name.
     pub target: String,
+    /// Inputs fed.
     pub inputs: u64,
     /// Calls that returned an answer (the rest returned an error).
     pub accepted: u64,
     /// Inputs that panicked, with the panic message.
     pub failures: Vec<(Vec<u8>, String)>,
+    /// How long it took.
     pub elapsed: Duration,
 }
 
@@ -194,8 +200,11 @@ type Runner = Box<dyn FnMut(&[u8]) -> bool>;
 /// One target: its seeds and how to feed it one input (`Ok(true)` when the
 /// input was accepted, `Ok(false)` for a clean error).
 pub struct Target {
+    /// Its name (one of [`TARGETS`]).
     pub name: &'static str,
+    /// Small valid inputs the mutations start from.
     pub seeds: Vec<Vec<u8>>,
+    /// The longest input fed.
     pub max_len: usize,
     run: Runner,
 }
@@ -395,7 +404,7 @@ mod targets {
                 let lattice = lattices[k % lattices.len()];
                 let opts = dissect_render::rasterize::RasterOptions {
                     lattice,
-                    cells: if k % 3 == 0 { None } else { Some(1 + k % 12) },
+                    cells: if k.is_multiple_of(3) { None } else { Some(1 + k % 12) },
                     scale: [10.0, 1.0, 0.5, 1e-9][k % 4],
                     ..Default::default()
                 };
@@ -442,7 +451,7 @@ mod targets {
             run: Box::new(move |input| {
                 k += 1;
                 let opts = dissect_render::voxelize::VoxelOptions {
-                    cells: if k % 2 == 0 { Some(1 + k % 9) } else { None },
+                    cells: if k.is_multiple_of(2) { Some(1 + k % 9) } else { None },
                     scale: if k % 4 == 1 {
                         Some([0.5, 1e-6, 3.0][k % 3])
                     } else {
