@@ -70,6 +70,7 @@ pub fn whole_usize<const MIN: u64>(s: &str) -> Result<usize, String> {
 }
 
 /// A finite number.
+#[cfg_attr(not(any(feature = "render", feature = "serve")), allow(dead_code))]
 pub fn finite(s: &str) -> Result<f64, String> {
     match s.trim().parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
@@ -79,6 +80,7 @@ pub fn finite(s: &str) -> Result<f64, String> {
 }
 
 /// A finite number above 0.
+#[cfg_attr(not(any(feature = "render", feature = "serve")), allow(dead_code))]
 pub fn positive(s: &str) -> Result<f64, String> {
     finite(s).and_then(|v| {
         if v > 0.0 {
@@ -90,6 +92,7 @@ pub fn positive(s: &str) -> Result<f64, String> {
 }
 
 /// A finite number of at least 0.
+#[cfg_attr(not(any(feature = "render", feature = "serve")), allow(dead_code))]
 pub fn non_negative(s: &str) -> Result<f64, String> {
     finite(s).and_then(|v| {
         if v >= 0.0 {

@@ -15,6 +15,7 @@ use crate::InputError;
 /// is already far beyond what the solver can dissect).
 pub const MAX_TEXT_BYTES: u64 = 16 << 20;
 /// The largest picture or mesh file read, in bytes.
+#[cfg(feature = "render")]
 pub const MAX_BINARY_BYTES: u64 = 64 << 20;
 
 /// Reads at most `cap` bytes of a file; a longer file (or an endless one,

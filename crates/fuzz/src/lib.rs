@@ -404,7 +404,11 @@ mod targets {
                 let lattice = lattices[k % lattices.len()];
                 let opts = dissect_render::rasterize::RasterOptions {
                     lattice,
-                    cells: if k.is_multiple_of(3) { None } else { Some(1 + k % 12) },
+                    cells: if k.is_multiple_of(3) {
+                        None
+                    } else {
+                        Some(1 + k % 12)
+                    },
                     scale: [10.0, 1.0, 0.5, 1e-9][k % 4],
                     ..Default::default()
                 };
@@ -451,7 +455,11 @@ mod targets {
             run: Box::new(move |input| {
                 k += 1;
                 let opts = dissect_render::voxelize::VoxelOptions {
-                    cells: if k.is_multiple_of(2) { Some(1 + k % 9) } else { None },
+                    cells: if k.is_multiple_of(2) {
+                        Some(1 + k % 9)
+                    } else {
+                        None
+                    },
                     scale: if k % 4 == 1 {
                         Some([0.5, 1e-6, 3.0][k % 3])
                     } else {
