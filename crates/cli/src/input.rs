@@ -11,9 +11,12 @@ use dissect_core::{Figure, LatticeKind};
 
 use crate::InputError;
 
-/// The largest figure or solution file read, in bytes (a figure of 4 MiB
-/// is already far beyond what the solver can dissect).
-pub const MAX_TEXT_BYTES: u64 = 16 << 20;
+/// The largest figure file read, in bytes: a million squares (four million
+/// `tri4` triangles), far beyond what the solver can dissect, and still
+/// read in well under 2 GiB.
+pub const MAX_FIGURE_BYTES: u64 = 1 << 20;
+/// The largest solution file read, in bytes.
+pub const MAX_SOLUTION_BYTES: u64 = 16 << 20;
 /// The largest picture or mesh file read, in bytes.
 #[cfg(feature = "render")]
 pub const MAX_BINARY_BYTES: u64 = 64 << 20;
@@ -41,9 +44,9 @@ pub fn read_capped(path: &Path, cap: u64) -> Result<Vec<u8>> {
     Ok(bytes)
 }
 
-/// Reads a text file (a figure or a solution) of at most [`MAX_TEXT_BYTES`].
-pub fn read(path: &Path) -> Result<String> {
-    let bytes = read_capped(path, MAX_TEXT_BYTES)?;
+/// Reads a text file (a figure or a solution) of at most `cap` bytes.
+pub fn read(path: &Path, cap: u64) -> Result<String> {
+    let bytes = read_capped(path, cap)?;
     String::from_utf8(bytes).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
         let valid = std::str::from_utf8(&e.as_bytes()[..at]).unwrap_or_default();
@@ -65,7 +68,7 @@ pub fn read(path: &Path) -> Result<String> {
 
 /// Reads one figure file.
 pub fn figure(path: &Path, lattice: LatticeKind) -> Result<Figure> {
-    let text = read(path)?;
+    let text = read(path, MAX_FIGURE_BYTES)?;
     parse_figure(&text, lattice).map_err(|e| {
         let hint = match e.kind {
             ParseErrorKind::UnexpectedChar { found, .. }
@@ -129,7 +132,7 @@ pub fn check_writable(path: &Path) -> Result<()> {
 
 /// Reads a solution file.
 pub fn solution(path: &Path) -> Result<(SolutionFile, Dissection)> {
-    let text = read(path)?;
+    let text = read(path, MAX_SOLUTION_BYTES)?;
     parse_solution(&text).map_err(|e| {
         let message = match &e {
             SolutionError::BadCell { lattice, .. } => match bad_cell::locate(&text, *lattice) {

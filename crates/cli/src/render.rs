@@ -140,10 +140,10 @@ fn output_dir(dir: &Path) -> Result<()> {
 
 /// Reads a solution and its figures into a scene.
 fn scene(solution: &Path, figures: &[PathBuf]) -> Result<Scene> {
-    let json = input::read(solution)?;
+    let json = input::read(solution, input::MAX_SOLUTION_BYTES)?;
     let texts = figures
         .iter()
-        .map(|p| input::read(p))
+        .map(|p| input::read(p, input::MAX_FIGURE_BYTES))
         .collect::<Result<Vec<_>>>()?;
     let refs: Vec<&str> = texts.iter().map(|s| s.as_str()).collect();
     Scene::from_solution(&json, &refs).map_err(|e| match e {

@@ -95,6 +95,8 @@ impl Scene {
     /// and congruent across figures. So nothing that is not a dissection is
     /// ever drawn, even without the figure files.
     pub fn verified(d: &Dissection) -> Result<Scene, RenderError> {
+        // The shape first (figures, pieces, counts), with its own messages.
+        let scene = Scene::new(d)?;
         let figs = d
             .pieces
             .iter()
@@ -106,7 +108,7 @@ impl Scene {
         if let Err(v) = dissect_core::verify::verify(d, &figs) {
             return Err(RenderError::Invalid(v[0].to_string()));
         }
-        Scene::new(d)
+        Ok(scene)
     }
 
     /// A scene from a solution JSON text, which must be a valid dissection:

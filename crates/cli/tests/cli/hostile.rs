@@ -239,6 +239,14 @@ fn endless_or_huge_inputs_are_refused_without_reading_them_whole() {
         refused(&sb, &["render", dev, "-o", "x.svg"], &[dev, "too large"]);
     }
     refused(&sb, &["info", "."], &["it is a folder"]);
+    // A figure file over 1 MiB (a 4-million-triangle tri4 figure would be
+    // a quarter of it).
+    let big = sb.write("big.txt", &("F".repeat(1023) + "\n").repeat(1025));
+    refused(
+        &sb,
+        &["info", "--lattice", "tri4", &big],
+        &["big.txt: too large", "1 MiB"],
+    );
 }
 
 #[test]
