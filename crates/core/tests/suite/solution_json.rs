@@ -82,7 +82,7 @@ fn defaults_and_unknown_keys() {
 #[test]
 fn the_format_key_is_required() {
     assert_eq!(
-        parse_solution(r#"{"format": "dissection-solution/1", "lattice": "square", "figures": []}"#),
+        parse_solution(r#"{"lattice": "square", "figures": []}"#),
         Err(SolutionError::MissingFormat)
     );
     let e = SolutionError::MissingFormat.to_string();
