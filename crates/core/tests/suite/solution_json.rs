@@ -113,7 +113,9 @@ fn errors() {
         Err(SolutionError::WrongFormat("dissection-solution/2".into()))
     );
     assert_eq!(
-        parse_solution(r#"{"format": "dissection-solution/1", "lattice": "hexagonal", "figures": []}"#),
+        parse_solution(
+            r#"{"format": "dissection-solution/1", "lattice": "hexagonal", "figures": []}"#
+        ),
         Err(SolutionError::UnknownLattice("hexagonal".into()))
     );
     let bad_cell = |text: &str, figure, piece, cell: Vec<i64>, lattice| {
