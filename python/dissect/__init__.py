@@ -83,7 +83,7 @@ class Dissection:
         self.lower_bound_reason: Optional[str] = result.get("lower_bound_reason")
         #: Whether the piece count is proved minimal (equals the lower bound).
         self.optimal: bool = bool(result.get("optimal", False))
-        #: The run's progress: one dict per level (seconds, pieces, ...).
+        #: Every improvement: dicts of pieces, seconds and by (who found it).
         self.history: List[Dict[str, Any]] = list(result.get("history", []))
         self.seed: Optional[int] = result.get("seed")
         self.seconds: Optional[float] = result.get("seconds")
@@ -91,11 +91,17 @@ class Dissection:
         self.stopped: bool = bool(result.get("stopped", False))
         #: Whether Ctrl-C (KeyboardInterrupt) ended the search.
         self.interrupted: bool = bool(result.get("interrupted", False))
+        #: Who found it: greedy, search, repair or sat.
+        self.found_by: Optional[str] = result.get("found_by")
+        #: Why the run ended: optimal, finished, time_limit or interrupted.
+        self.end: Optional[str] = result.get("end")
         self._extra = {
             k: result[k]
             for k in ("area_variance", "level", "explorations", "found_by")
-            if k in result
+            if result.get(k) is not None
         }
+        # The engine's solution file text (what `dissect solve -o` writes).
+        self._json: Optional[str] = result.get("solution_json")
 
     @property
     def piece_count(self) -> int:
@@ -115,6 +121,16 @@ class Dissection:
         """The solution in FORMAT.md form (``dissection-solution/1``), with
         ``pieces``, ``areas``, ``seed``, ``lower_bound`` and ``optimal`` keys
         as ``dissect solve`` writes them. Also written to ``path`` if given."""
+        if self._json is not None:
+            text = self._json
+        else:
+            text = self._build_json()
+        if path is not None:
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(text)
+        return text
+
+    def _build_json(self) -> str:
         extra: Dict[str, Any] = {"pieces": self.piece_count, "areas": self.areas}
         if "area_variance" in self._extra:
             extra["area_variance"] = self._extra["area_variance"]
@@ -137,9 +153,6 @@ class Dissection:
             [[list(map(list, p)) for p in fig] for fig in self.pieces],
             json.dumps(extra),
         )
-        if path is not None:
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(text)
         return text
 
     def verify(self) -> bool:

@@ -91,14 +91,14 @@ _explorers: Dict[bytes, Any] = {}
 
 
 @ray.remote
-def _explore_task(key: bytes, problem, round_: int, level: int, indices: List[int], parents: List[bytes]):
+def _explore_task(key: bytes, problem, round_: int, level: int, descent: bool, indices: List[int], parents: List[bytes]):
     explorer = _explorers.get(key)
     if explorer is None:
         figures, seed, options = problem
         explorer = _dissect.Explorer(figures, seed=seed, **options)
         _explorers.clear()
         _explorers[key] = explorer
-    return explorer.explore(round_, level, indices, parents)
+    return explorer.explore(round_, level, descent, indices, parents)
 
 
 class _RayExecutor:
@@ -116,16 +116,17 @@ class _RayExecutor:
         self._parents = (None, None)
         self.batches = 0
 
-    def __call__(self, round_, level, start, end, parents):
+    def __call__(self, round_, level, descent, start, end, parents):
         # The parents are the same for every batch of a level: put them once.
-        if self._parents[0] != (round_, level):
-            self._parents = ((round_, level), ray.put(parents))
+        key = (round_, level, descent, len(parents), parents[:1])
+        if self._parents[0] != key:
+            self._parents = (key, ray.put(parents))
         parents_ref = self._parents[1]
         indices = list(range(start, end))
         n = max(1, min(self.tasks, len(indices)))
         chunks = [indices[i * len(indices) // n:(i + 1) * len(indices) // n] for i in range(n)]
         refs = [
-            _explore_task.remote(self.key, self.problem, round_, level, c, parents_ref)
+            _explore_task.remote(self.key, self.problem, round_, level, descent, c, parents_ref)
             for c in chunks
         ]
         self.batches += 1
@@ -145,9 +146,10 @@ def solve(
     """``dissect.solve`` with the search's explorations spread over the Ray
     cluster: every batch of explorations is cut into ``tasks`` Ray tasks
     (default: the cluster's CPU count) of consecutive explorations. The
-    level loop runs here and gets the results back in index order, so the
-    answer is the same as ``dissect.solve``'s for the same seed and options
-    when no time limit (or Ctrl-C) stops the search. Worth it when
+    level loop (and the exact lower bound and repair beside it) runs here
+    and gets the results back in index order, so the answer is the same as
+    ``dissect.solve``'s for the same seed and options when no time limit
+    (or Ctrl-C) stops the search. Worth it when
     explorations are expensive (large figures, many explorations, many
     machines); on small figures Ray's per-batch overhead dominates (see
     BENCHMARKS.md).

@@ -2,11 +2,11 @@
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
-use std::time::Instant;
 
 use dissect_core::io::{parse_solution, Dissection};
-use dissect_core::solver::{self, Batch, Event, Executor, Exploration, Observer, Options};
+use dissect_core::solver::{self, Batch, Executor, Exploration};
 use dissect_core::{Figure, LatticeKind};
+use dissect_engine::{End, EngineError, RunConfig, RunOptions, Strategy};
 use dissect_exact::{ExactOptions, Mode};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
@@ -15,8 +15,9 @@ use crate::errors::{error, Kind};
 use crate::figure::{cells_to_py, PyFigure};
 use crate::run::{deadline, watched};
 
-/// The solver options `solve` takes as keywords (the CLI's flags).
-const OPTION_NAMES: [&str; 11] = [
+/// The options `solve` takes as keywords: `dissect solve`'s flags
+/// (`no_mirror` is `mirror=False`, `no_prove` is `prove=False`).
+const OPTION_NAMES: [&str; 16] = [
     "mirror",
     "max_pieces",
     "area_weight",
@@ -28,6 +29,11 @@ const OPTION_NAMES: [&str; 11] = [
     "full_level",
     "extra_rounds",
     "patience",
+    "rounds",
+    "prove",
+    "paper",
+    "exact",
+    "repair",
 ];
 
 /// The names of the options `solve` accepts besides seed, time_limit and threads.
@@ -92,97 +98,103 @@ pub(crate) fn problem(
     Ok((figs, names))
 }
 
-/// Solver options from keywords, checked as `dissect solve` checks its flags.
-pub(crate) fn options(
+/// An engine message in Python's words: `--split-tries` becomes `split_tries`.
+fn python_words(message: &str) -> String {
+    message
+        .split(' ')
+        .map(|w| match w.strip_prefix("--") {
+            Some(flag) => flag.replace('-', "_"),
+            None => w.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The run settings of a call, checked by the engine as `dissect solve`'s
+/// flags are.
+pub(crate) fn run_options(
     py: Python<'_>,
-    lattice: LatticeKind,
     seed: u64,
     threads: usize,
+    time_limit: Option<f64>,
     kwargs: Option<&Bound<'_, PyDict>>,
-) -> PyResult<Options> {
+) -> PyResult<RunOptions> {
     let bad = |m: String| error(py, Kind::Option, m);
     if threads > 256 {
         return Err(bad(format!(
             "threads={threads} is too many (at most 256; 0 means one per core)"
         )));
     }
-    let mut o = Options {
+    let mut c = RunConfig {
         seed,
         threads,
-        mirror: lattice.lattice().supports_mirror(),
-        ..Options::default()
+        time_limit,
+        ..RunConfig::default()
     };
-    let Some(kwargs) = kwargs else {
-        return Ok(o);
-    };
-    for (key, value) in kwargs.iter() {
-        let key: String = key.extract()?;
-        let int = |v: &Bound<'_, PyAny>| -> PyResult<usize> {
-            if v.is_instance_of::<pyo3::types::PyBool>() {
-                return Err(bad(format!("{key} must be a whole number >= 0, got {v}")));
-            }
-            v.extract::<usize>()
-                .map_err(|_| bad(format!("{key} must be a whole number >= 0, got {v}")))
-        };
-        let float = |v: &Bound<'_, PyAny>| -> PyResult<f64> {
-            v.extract::<f64>()
-                .ok()
-                .filter(|x| x.is_finite() && *x >= 0.0)
-                .ok_or_else(|| bad(format!("{key} must be a number >= 0, got {v}")))
-        };
-        let boolean = |v: &Bound<'_, PyAny>| -> PyResult<bool> {
-            v.extract::<bool>()
-                .map_err(|_| bad(format!("{key} must be True or False, got {v}")))
-        };
-        match key.as_str() {
-            "mirror" => o.mirror = boolean(&value)? && lattice.lattice().supports_mirror(),
-            "max_pieces" => {
-                o.max_pieces = if value.is_none() {
-                    None
-                } else {
-                    Some(int(&value)?)
+    let (mut paper, mut exact) = (false, false);
+    if let Some(kwargs) = kwargs {
+        for (key, value) in kwargs.iter() {
+            let key: String = key.extract()?;
+            let int = |v: &Bound<'_, PyAny>| -> PyResult<usize> {
+                if v.is_instance_of::<pyo3::types::PyBool>() {
+                    return Err(bad(format!("{key} must be a whole number >= 0, got {v}")));
+                }
+                v.extract::<usize>()
+                    .map_err(|_| bad(format!("{key} must be a whole number >= 0, got {v}")))
+            };
+            let float = |v: &Bound<'_, PyAny>| -> PyResult<f64> {
+                v.extract::<f64>()
+                    .map_err(|_| bad(format!("{key} must be a number, got {v}")))
+            };
+            let boolean = |v: &Bound<'_, PyAny>| -> PyResult<bool> {
+                if !v.is_instance_of::<pyo3::types::PyBool>() {
+                    return Err(bad(format!("{key} must be True or False, got {v}")));
+                }
+                v.extract::<bool>()
+            };
+            match key.as_str() {
+                "mirror" => c.mirror = boolean(&value)?,
+                "max_pieces" => {
+                    c.max_pieces = if value.is_none() {
+                        None
+                    } else {
+                        Some(int(&value)?)
+                    }
+                }
+                "area_weight" => c.area_weight = float(&value)?,
+                "explorations" => c.explorations = int(&value)?,
+                "keep" => c.keep = int(&value)?,
+                "iterations" => c.iterations = int(&value)?,
+                "split_penalty" => c.split_penalty = float(&value)?,
+                "split_tries" => c.split_tries = int(&value)?,
+                "full_level" => c.full_level = boolean(&value)?,
+                "extra_rounds" => c.extra_rounds = int(&value)?,
+                "patience" => c.patience = int(&value)?,
+                "rounds" => c.idle_rounds = int(&value)?,
+                "prove" => c.prove = boolean(&value)?,
+                "repair" => c.repair = boolean(&value)?,
+                "paper" => paper = boolean(&value)?,
+                "exact" => exact = boolean(&value)?,
+                _ => {
+                    return Err(bad(format!(
+                        "unknown option {key:?}; solve takes seed, time_limit, threads and {}",
+                        OPTION_NAMES.join(", ")
+                    )))
                 }
             }
-            "area_weight" => o.area_weight = float(&value)?,
-            "explorations" => o.explorations = int(&value)?,
-            "keep" => o.keep = int(&value)?,
-            "iterations" => o.iterations = int(&value)?,
-            "split_penalty" => o.split_penalty = float(&value)?,
-            "split_tries" => o.split_tries = int(&value)?,
-            "full_level" => o.full_levels = boolean(&value)?,
-            "extra_rounds" => o.extra_rounds = int(&value)?,
-            "patience" => o.patience = int(&value)?,
-            _ => {
-                return Err(bad(format!(
-                    "unknown option {key:?}; solve takes seed, time_limit, threads and {}",
-                    OPTION_NAMES.join(", ")
-                )))
-            }
         }
     }
-    Ok(o)
-}
-
-/// Notes the end of every level (the run's history), with its time.
-struct History {
-    start: Instant,
-    levels: Mutex<Vec<(f64, Event)>>,
-}
-
-impl Observer for History {
-    fn on_event(&self, event: &Event) {
-        if matches!(event, Event::LevelFinished { .. }) {
-            let t = self.start.elapsed().as_secs_f64();
-            self.levels
-                .lock()
-                .unwrap_or_else(|e| e.into_inner())
-                .push((t, event.clone()));
-        }
-    }
+    c.strategy = match (paper, exact) {
+        (true, true) => return Err(bad("paper and exact cannot be used together".into())),
+        (true, false) => Strategy::Paper,
+        (false, true) => Strategy::Exact,
+        (false, false) => Strategy::Anytime,
+    };
+    RunOptions::new(c).map_err(|e| bad(python_words(&e.to_string())))
 }
 
 /// Runs batches of explorations through a Python callable
-/// `executor(round, level, start, end, parents) -> list[bytes]` (parents and
+/// `executor(round, level, descent, start, end, parents) -> list[bytes]` (parents and
 /// results as `Exploration` bytes): how `dissect.ray` spreads a search.
 struct PyExecutor {
     call: Py<PyAny>,
@@ -201,6 +213,7 @@ impl Executor for PyExecutor {
             let args = (
                 batch.round,
                 batch.level,
+                batch.descent,
                 batch.indices.start,
                 batch.indices.end,
                 parents,
@@ -234,28 +247,30 @@ pub(crate) struct PyExplorer {
 #[pymethods]
 impl PyExplorer {
     #[new]
-    #[pyo3(signature = (figures, seed = 1, threads = 0, **options))]
+    #[pyo3(signature = (figures, seed = 1, **options))]
     fn new(
         py: Python<'_>,
         figures: Vec<PyRef<'_, PyFigure>>,
         seed: u64,
-        threads: usize,
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyExplorer> {
         let (figs, _) = problem(py, &figures)?;
-        let opts = self::options(py, figs[0].lattice(), seed, threads, options)?;
+        let opts = run_options(py, seed, 1, None, options)?.solver_options();
         let explorer = solver::Explorer::new(&figs, &opts)
             .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
         Ok(PyExplorer { explorer })
     }
 
-    /// The explorations `indices` of `level` in `round` from `parents`
-    /// (bytes), as bytes, in order; without the GIL.
+    /// The explorations `indices` of `level` in `round` (of the descent
+    /// when `descent`) from `parents` (bytes), as bytes, in order; without
+    /// the GIL.
+    #[allow(clippy::too_many_arguments)] // a batch's whole identity
     fn explore<'py>(
         &self,
         py: Python<'py>,
         round: usize,
         level: usize,
+        descent: bool,
         indices: Vec<usize>,
         parents: Vec<Vec<u8>>,
     ) -> PyResult<Vec<Bound<'py, PyBytes>>> {
@@ -270,7 +285,7 @@ impl PyExplorer {
                 .iter()
                 .map(|&i| {
                     self.explorer
-                        .explore(round, level, i, &parents, &stop)
+                        .explore(round, level, descent, i, &parents, &stop)
                         .map(|e| e.to_bytes())
                 })
                 .collect::<Result<Vec<_>, _>>()
@@ -280,8 +295,9 @@ impl PyExplorer {
     }
 }
 
-/// Finds a dissection (see `dissect.solve`); returns a dict the Python half
-/// turns into a `Dissection`. With `executor` (see [`PyExecutor`]) the
+/// Finds a dissection (see `dissect.solve`) by `dissect_engine::run`, the
+/// run `dissect solve` makes; returns a dict the Python half turns into a
+/// `Dissection`. With `executor` (see [`PyExecutor`]) the heuristic's
 /// explorations run wherever it sends them.
 #[pyfunction]
 #[pyo3(signature = (figures, seed = 1, time_limit = None, threads = 0, executor = None, **options))]
@@ -296,111 +312,96 @@ pub(crate) fn solve<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let (figs, names) = problem(py, &figures)?;
     let lattice = figs[0].lattice();
-    let opts = self::options(py, lattice, seed, threads, options)?;
-    let deadline = deadline(time_limit).map_err(|m| error(py, Kind::Option, m))?;
-    let stop = AtomicBool::new(time_limit == Some(0.0));
-    let history = History {
-        start: Instant::now(),
-        levels: Mutex::new(Vec::new()),
-    };
+    let run_options = run_options(py, seed, threads, time_limit, options)?;
     let executor = executor.map(|call| PyExecutor {
         call,
         error: Mutex::new(None),
     });
-    let run = watched(py, &stop, deadline, || {
+    let stop = AtomicBool::new(false);
+    // The engine keeps the time limit; the watcher only turns Ctrl-C into `stop`.
+    let run = watched(py, &stop, None, || {
         let ex = executor.as_ref().map(|e| e as &dyn Executor);
-        solver::solve_with(&figs, &opts, &stop, &history, ex)
+        dissect_engine::run_with(&figs, &names, &run_options, &stop, &(), ex)
     })?;
     if let Some(e) = executor.and_then(|e| e.error.into_inner().unwrap_or_else(|p| p.into_inner()))
     {
         return Err(e);
     }
-    let seconds = history.start.elapsed().as_secs_f64();
-    let outcome = run
-        .value
-        .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
-    let Some(found) = outcome.found else {
+    let report = match run.value {
+        Ok(r) => r,
+        Err(e @ EngineError::Figures(_)) => return Err(error(py, Kind::Problem, e.to_string())),
+        Err(e) => return Err(pyo3::exceptions::PyRuntimeError::new_err(e.to_string())),
+    };
+    let Some(best) = &report.best else {
         if let Some(e) = run.interrupted {
             return Err(e);
         }
-        let why = if outcome.stopped {
-            format!(
+        let why = match report.end {
+            End::TimeLimit => format!(
                 "the time limit of {} s was reached",
                 time_limit.unwrap_or_default()
-            )
-        } else {
-            match opts.max_pieces {
+            ),
+            _ => match run_options.config().max_pieces {
                 Some(k) => format!("max_pieces={k} was reached"),
                 None => "every piece count was tried".to_string(),
-            }
+            },
         };
         return Err(error(
             py,
             Kind::NotFound,
             format!(
-                "no dissection found: {why} after {seconds:.1} s; the best candidate ({} pieces) had matching score E_M = {}",
-                outcome.last_pieces,
-                outcome.best_mismatch.map_or("n/a".to_string(), |m| m.to_string())
+                "no dissection found: {why} after {:.1} s; the best candidate ({} pieces) had matching score E_M = {}; lower bound: {} ({})",
+                report.seconds,
+                report.last_pieces.max(1),
+                report.best_mismatch.map_or("n/a".to_string(), |m| m.to_string()),
+                report.lower_bound.value,
+                report.lower_bound.reason,
             ),
         ));
     };
-    let dissection = Dissection {
-        lattice,
-        mirror: opts.mirror,
-        names: names.clone(),
-        pieces: found.pieces.clone(),
-    };
-    if let Err(v) = dissect_core::verify::verify(&dissection, &figs) {
-        return Err(pyo3::exceptions::PyRuntimeError::new_err(format!(
-            "internal error: the solver's dissection failed verification: {}",
-            v[0]
-        )));
-    }
-    // A lower bound that costs next to nothing: components and
-    // incompatible cells (the SAT proof is `bound`'s and the engine's).
-    let cheap = dissect_exact::cheap_bound(&figs, opts.mirror)
-        .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
     let out = PyDict::new(py);
     out.set_item("lattice", lattice.name())?;
-    out.set_item("mirror", opts.mirror)?;
+    out.set_item("mirror", best.dissection().mirror)?;
     out.set_item("names", names.clone())?;
-    out.set_item("pieces", pieces_to_py(py, lattice, &found.pieces)?)?;
-    out.set_item("level", found.level)?;
-    out.set_item("area_variance", found.variance)?;
-    out.set_item("explorations", outcome.explorations)?;
-    out.set_item("stopped", outcome.stopped)?;
-    out.set_item("interrupted", run.interrupted.is_some())?;
-    out.set_item("seconds", seconds)?;
-    out.set_item("seed", seed)?;
-    out.set_item("lower_bound", cheap.value)?;
-    out.set_item("lower_bound_reason", cheap.describe(&names))?;
-    out.set_item("optimal", found.piece_count() <= cheap.value)?;
-    let levels = history
-        .levels
-        .into_inner()
-        .unwrap_or_else(|e| e.into_inner());
+    out.set_item("pieces", pieces_to_py(py, lattice, best.pieces())?)?;
+    out.set_item("level", report.level)?;
+    out.set_item("area_variance", best.variance())?;
+    out.set_item("explorations", report.explorations)?;
+    out.set_item("rounds", report.rounds)?;
+    out.set_item("stopped", report.end.stopped())?;
+    out.set_item(
+        "interrupted",
+        report.end == End::Interrupted || run.interrupted.is_some(),
+    )?;
+    out.set_item(
+        "end",
+        match report.end {
+            End::Optimal => "optimal",
+            End::Finished => "finished",
+            End::TimeLimit => "time_limit",
+            End::Interrupted => "interrupted",
+            _ => "other",
+        },
+    )?;
+    out.set_item("seconds", report.seconds)?;
+    out.set_item("seed", report.seed)?;
+    out.set_item("lower_bound", report.lower_bound.value)?;
+    out.set_item("lower_bound_reason", report.lower_bound.reason.clone())?;
+    out.set_item("lower_bound_proof", report.lower_bound.proof.clone())?;
+    out.set_item("optimal", report.optimal)?;
+    out.set_item("found_by", report.source.map(|s| s.name()))?;
+    out.set_item("time_to_first", report.time_to_first)?;
+    out.set_item("time_to_best", report.time_to_best)?;
     let rows = PyList::empty(py);
-    for (t, event) in levels {
-        let Event::LevelFinished {
-            level,
-            pieces,
-            explorations,
-            best_mismatch: mismatch,
-            found,
-        } = event
-        else {
-            continue;
-        };
+    for h in &report.history {
         let row = PyDict::new(py);
-        row.set_item("seconds", t)?;
-        row.set_item("level", level)?;
-        row.set_item("pieces", pieces)?;
-        row.set_item("explorations", explorations)?;
-        row.set_item("best_mismatch", mismatch)?;
-        row.set_item("found", found)?;
+        row.set_item("pieces", h.pieces)?;
+        row.set_item("seconds", h.seconds)?;
+        row.set_item("by", h.source.name())?;
         rows.append(row)?;
     }
     out.set_item("history", rows)?;
+    out.set_item("solution_json", report.solution_json())?;
     Ok(out)
 }
 

@@ -14,15 +14,17 @@ mode = sys.argv[1]
 print("started", flush=True)
 try:
     if mode == "found":
-        # Level 1 finds a 2-piece dissection at once, then goes on through
-        # a million explorations (full_level) until it is stopped.
-        d = dissect.solve([a, b], explorations=10**6, full_level=True, threads=1)
+        # The paper's level 1 finds a 2-piece dissection at once, then goes
+        # on through a million explorations (full_level) until it is stopped.
+        d = dissect.solve([a, b], paper=True, prove=False, explorations=10**6,
+                          full_level=True, threads=1)
     else:
         # A 3x3 and a 4x4 square into a 5x5 take 4 pieces: level 1 (2
         # pieces) finds nothing and runs until stopped.
         squares = dissect.Figure.from_text("###.####\n###.####\n###.####\n....####\n")
         five = dissect.Figure.from_text("#####\n" * 5)
-        d = dissect.solve([squares, five], max_pieces=2, explorations=10**6, threads=1)
+        d = dissect.solve([squares, five], paper=True, prove=False, max_pieces=2,
+                          explorations=10**6, threads=1)
 except KeyboardInterrupt:
     print("KeyboardInterrupt", flush=True)
     sys.exit(3)

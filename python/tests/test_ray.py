@@ -60,6 +60,7 @@ def test_solve_many_failures(cluster):
     [
         ("squares-3-4-split-to-5", "square", {"seed": 1}),
         ("squares-3-4-split-to-5", "square", {"seed": 2, "explorations": 60, "patience": 5}),
+        ("squares-3-4-split-to-5", "square", {"seed": 1, "paper": True, "prove": False}),
         ("tri-triangle8-to-rect4x8", "tri4", {"seed": 1}),
         ("cube4-cavity-to-7x4x2", "cubic", {"seed": 3, "explorations": 100}),
     ],
@@ -73,9 +74,11 @@ def test_distributed_search_gives_the_local_answer(cluster, name, lattice, optio
     local = dissect.solve(figures, **options)
     spread = dray.solve(figures, tasks=2, **options)
     assert spread.pieces == local.pieces
-    assert spread.history and [
-        (h["level"], h["explorations"], h["best_mismatch"]) for h in spread.history
-    ] == [(h["level"], h["explorations"], h["best_mismatch"]) for h in local.history]
+    assert spread.history and [(h["pieces"], h["by"]) for h in spread.history] == [
+        (h["pieces"], h["by"]) for h in local.history
+    ]
+    # (The lower bound is the exact side's progress when the run ended:
+    # timing, not the answer.)
     check_with_verify_py(spread, files, tmp_path)
 
 

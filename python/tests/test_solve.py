@@ -28,7 +28,8 @@ def test_solve_shared_instances_checked_by_verify_py(name, lattice, pieces, tmp_
     check_with_verify_py(d, files, tmp_path)
     assert d.lower_bound is not None and d.lower_bound <= d.piece_count
     assert d.optimal == (d.lower_bound == d.piece_count)
-    assert d.history and d.history[-1]["found"]
+    assert d.history and d.history[-1]["pieces"] == pieces
+    assert d.found_by in ("greedy", "search", "repair", "sat")
     sol = json.loads(d.to_json())
     assert sol["format"] == "dissection-solution/1"
     assert [f["name"] for f in sol["figures"]] == [p.name for p in files]

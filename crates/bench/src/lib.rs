@@ -13,6 +13,7 @@ pub mod paper;
 pub mod report;
 pub mod run;
 pub mod scale;
+pub mod schedule;
 
 use std::path::PathBuf;
 use std::time::Duration;
@@ -22,7 +23,7 @@ use dissect_core::Figure;
 
 use manifest::Instance;
 use report::{InstanceResult, ScaleStep};
-use run::{run_seed, SeedRun};
+use run::{run_mode, SeedRun};
 
 /// Occurs when the harness cannot read or prepare an instance.
 #[derive(Debug, thiserror::Error)]
@@ -113,6 +114,8 @@ pub struct Plan {
     pub time_limit_2d: Option<Duration>,
     /// The time limit of each run on `cubic`.
     pub time_limit_3d: Option<Duration>,
+    /// How each run searches (default: `dissect solve` with no flag).
+    pub mode: run::Mode,
 }
 
 impl Plan {
@@ -134,7 +137,7 @@ impl Plan {
                     seed,
                     ..self.options.clone()
                 };
-                let run = run_seed(figures, &options, limit);
+                let run = run_mode(figures, &options, self.mode, limit);
                 each(&run);
                 run
             })

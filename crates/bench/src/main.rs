@@ -22,6 +22,12 @@ use dissect_core::{Figure, LatticeKind};
 struct Args {
     /// Directory holding manifest.json and one directory per instance.
     instances: PathBuf,
+    /// Exactly the paper's schedule (first valid level), as `dissect solve --paper`.
+    #[arg(long)]
+    paper: bool,
+    /// No exact lower-bound search beside the heuristic, as `dissect solve --no-prove`.
+    #[arg(long)]
+    no_prove: bool,
     /// Seeds, one run each.
     #[arg(
         long,
@@ -233,6 +239,14 @@ fn plan(args: &Args) -> Result<Plan> {
             args.time_limit_3d.or(args.time_limit).unwrap_or(600.0),
             "--time-limit-3d",
         )?,
+        mode: dissect_bench::run::Mode {
+            strategy: if args.paper {
+                dissect_engine::Strategy::Paper
+            } else {
+                dissect_engine::Strategy::Anytime
+            },
+            prove: !args.no_prove,
+        },
     })
 }
 
@@ -315,8 +329,14 @@ fn progress(what: &str, r: &SeedRun) -> String {
     }
     match r.pieces {
         Some(p) => format!(
-            "{head} {p} pieces, first valid {} s, total {} s (CPU {} s), area variance {:.1}",
+            "{head} {p} pieces{}, first valid {} s, best {} s, total {} s (CPU {} s), area variance {:.1}",
+            match r.lower_bound {
+                Some(b) if r.optimal => format!(" (optimal: lower bound {b})"),
+                Some(b) => format!(" (lower bound {b})"),
+                None => String::new(),
+            },
             r.first_valid.map_or("-".to_string(), report::secs),
+            r.time_to_best.map_or("-".to_string(), report::secs),
             report::secs(r.total),
             r.cpu.map_or("-".to_string(), report::secs),
             r.variance.unwrap_or(f64::NAN),

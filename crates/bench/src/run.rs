@@ -1,15 +1,13 @@
-//! One timed solver run: `dissect_core::solver::solve` in-process with a
-//! stop flag raised by a timer thread at the time limit, the result checked
-//! by the independent verifier.
+//! One timed run through the engine (`dissect_engine::run`: its time limit,
+//! its searches, its verified answer), with process CPU time beside wall
+//! time.
 
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Condvar, Mutex};
+use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
-use dissect_core::io::Dissection;
-use dissect_core::solver::{solve, Event, Found, Observer, Options};
-use dissect_core::verify::verify;
+use dissect_core::solver::{Found, Options};
 use dissect_core::Figure;
+use dissect_engine::{RunConfig, RunOptions, Strategy};
 
 /// What one seed produced.
 #[derive(Clone, Debug, PartialEq)]
@@ -18,10 +16,12 @@ pub struct SeedRun {
     pub seed: u64,
     /// The piece count of the dissection found (`None`: none found).
     pub pieces: Option<usize>,
-    /// From the start of `solve` to the end of the first level that held a
-    /// valid dissection.
+    /// From the start of the run to its first valid dissection.
     pub first_valid: Option<Duration>,
-    /// From the start of `solve` to its return.
+    /// From the start of the run to the first dissection with the final
+    /// piece count.
+    pub time_to_best: Option<Duration>,
+    /// From the start of the run to its return.
     pub total: Duration,
     /// CPU time of the process (every thread) during the run, where the
     /// platform tells it: on a shared machine it shows how much of the wall
@@ -31,12 +31,16 @@ pub struct SeedRun {
     pub variance: Option<f64>,
     /// Whether the time limit stopped the search.
     pub stopped: bool,
+    /// The best lower bound proved.
+    pub lower_bound: Option<usize>,
+    /// Whether the dissection meets the lower bound.
+    pub optimal: bool,
     /// Explorations run.
     pub explorations: usize,
     /// The piece count of the last level searched and its best `E_M`.
     pub last_level: (usize, Option<u64>),
-    /// `Err` when the solver's dissection failed verification (a bug) or
-    /// the solver refused the figures: the message.
+    /// `Err` when the run failed (a dissection the verifier rejects: a bug;
+    /// or figures the solver refuses): the message.
     pub error: Option<String>,
     /// The dissection (verified), to save.
     pub found: Option<Found>,
@@ -49,110 +53,112 @@ impl SeedRun {
     }
 }
 
-/// Records when the first level with a valid dissection finished.
-struct FirstValid {
-    start: Instant,
-    at: Mutex<Option<Duration>>,
+/// How a run searches: the engine's strategy and whether the exact search
+/// runs beside the heuristic.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Mode {
+    /// The strategy.
+    pub strategy: Strategy,
+    /// Whether the exact lower-bound search runs beside.
+    pub prove: bool,
 }
 
-impl Observer for FirstValid {
-    fn on_event(&self, event: &Event) {
-        if let Event::LevelFinished { found: true, .. } = event {
-            let mut at = self.at.lock().expect("observer lock");
-            if at.is_none() {
-                *at = Some(self.start.elapsed());
-            }
+impl Default for Mode {
+    /// `dissect solve` with no flag: anytime, proving.
+    fn default() -> Mode {
+        Mode {
+            strategy: Strategy::Anytime,
+            prove: true,
         }
     }
 }
 
-/// Runs the solver once on `figures` with `options` (its `seed` is used),
-/// stopping it after `time_limit`, and verifies what it returns.
+/// Runs the engine once on `figures` with `options` (its `seed` is used)
+/// in the default mode, stopping at `time_limit`.
 pub fn run_seed(figures: &[Figure], options: &Options, time_limit: Option<Duration>) -> SeedRun {
-    let stop = AtomicBool::new(false);
-    let cpu_start = crate::cpu::process_cpu_time();
-    let finished = (Mutex::new(false), Condvar::new());
-    let start = Instant::now();
-    let observer = FirstValid {
-        start,
-        at: Mutex::new(None),
-    };
-    let outcome = std::thread::scope(|scope| {
-        if let Some(limit) = time_limit {
-            let (finished, stop) = (&finished, &stop);
-            scope.spawn(move || {
-                let (lock, cv) = finished;
-                let deadline = start + limit;
-                let mut done = lock.lock().expect("timer lock");
-                while !*done {
-                    let now = Instant::now();
-                    if now >= deadline {
-                        stop.store(true, Ordering::SeqCst);
-                        return;
-                    }
-                    done = cv.wait_timeout(done, deadline - now).expect("timer lock").0;
-                }
-            });
-        }
-        let outcome = solve(figures, options, &stop, &observer);
-        let (lock, cv) = &finished;
-        *lock.lock().expect("timer lock") = true;
-        cv.notify_all();
-        outcome
-    });
-    let total = start.elapsed();
-    let cpu = crate::cpu::process_cpu_time()
-        .zip(cpu_start)
-        .map(|(end, start)| end.saturating_sub(start));
-    let first_valid = *observer.at.lock().expect("observer lock");
+    run_mode(figures, options, Mode::default(), time_limit)
+}
+
+/// Runs the engine once in `mode`.
+pub fn run_mode(
+    figures: &[Figure],
+    options: &Options,
+    mode: Mode,
+    time_limit: Option<Duration>,
+) -> SeedRun {
     let mut run = SeedRun {
         seed: options.seed,
         pieces: None,
         first_valid: None,
-        total,
-        cpu,
+        time_to_best: None,
+        total: Duration::ZERO,
+        cpu: None,
         variance: None,
         stopped: false,
+        lower_bound: None,
+        optimal: false,
         explorations: 0,
         last_level: (0, None),
         error: None,
         found: None,
     };
-    let outcome = match outcome {
+    let config = RunConfig {
+        strategy: mode.strategy,
+        prove: mode.prove,
+        mirror: options.mirror,
+        seed: options.seed,
+        threads: options.threads,
+        time_limit: time_limit.map(|d| d.as_secs_f64()),
+        max_pieces: options.max_pieces,
+        area_weight: options.area_weight,
+        explorations: options.explorations,
+        keep: options.keep,
+        iterations: options.iterations,
+        split_penalty: options.split_penalty,
+        split_tries: options.split_tries,
+        full_level: options.full_levels,
+        extra_rounds: options.extra_rounds,
+        patience: options.patience,
+        ..RunConfig::default()
+    };
+    let run_options = match RunOptions::new(config) {
         Ok(o) => o,
         Err(e) => {
-            run.error = Some(format!("the solver refused the figures: {e}"));
+            run.error = Some(format!("bad settings: {e}"));
             return run;
         }
     };
-    run.stopped = outcome.stopped;
-    run.explorations = outcome.explorations;
-    run.last_level = (outcome.last_pieces, outcome.best_mismatch);
-    if let Some(found) = outcome.found {
-        let d = Dissection {
-            lattice: figures[0].lattice(),
-            mirror: options.mirror,
-            names: Vec::new(),
-            pieces: found.pieces.clone(),
-        };
-        match verify(&d, figures) {
-            Ok(n) => {
-                run.pieces = Some(n);
-                run.variance = Some(found.variance);
-                // A level that found a dissection but was stopped before
-                // the observer saw it cannot happen; fall back to the total.
-                run.first_valid = Some(first_valid.unwrap_or(total));
-                run.found = Some(found);
-            }
-            Err(violations) => {
-                let list: Vec<String> = violations.iter().map(|v| v.to_string()).collect();
-                run.error = Some(format!(
-                    "BUG: the solver's {}-piece dissection failed verification: {}",
-                    found.piece_count(),
-                    list.join("; ")
-                ));
-            }
+    let cpu_start = crate::cpu::process_cpu_time();
+    let start = Instant::now();
+    let report = dissect_engine::run(figures, &[], &run_options, &AtomicBool::new(false), &());
+    run.total = start.elapsed();
+    run.cpu = crate::cpu::process_cpu_time()
+        .zip(cpu_start)
+        .map(|(end, start)| end.saturating_sub(start));
+    let report = match report {
+        Ok(r) => r,
+        Err(e) => {
+            run.error = Some(format!("the engine refused the run: {e}"));
+            return run;
         }
+    };
+    run.stopped = report.end.stopped();
+    run.explorations = report.explorations;
+    run.last_level = (report.last_pieces, report.best_mismatch);
+    run.lower_bound = Some(report.lower_bound.value);
+    run.optimal = report.optimal;
+    run.first_valid = report.time_to_first.map(Duration::from_secs_f64);
+    run.time_to_best = report.time_to_best.map(Duration::from_secs_f64);
+    if let Some(best) = &report.best {
+        run.pieces = Some(best.piece_count());
+        run.variance = Some(best.variance());
+        run.found = Some(Found {
+            pieces: best.pieces().to_vec(),
+            level: report.level.unwrap_or(best.piece_count().saturating_sub(1)),
+            variance: best.variance(),
+        });
+        // A dissection found but no history (cannot happen): the total.
+        run.first_valid = run.first_valid.or(Some(run.total));
     }
     run
 }

@@ -85,6 +85,20 @@ fn shared_manifest_parses_and_every_instance_loads() {
 }
 
 #[test]
+fn the_projects_own_instances_load() {
+    // examples/instances: a voxelized torus mesh (make_torus.py) to a cuboid.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/instances");
+    let m = Manifest::load(&root).expect("examples manifest");
+    let torus = m.get("torus512-to-slab16x8x4").expect("torus instance");
+    let figures = torus.load_figures(m.root()).expect("torus loads");
+    assert_eq!(torus.lattice(), LatticeKind::Cubic);
+    assert!(figures.iter().all(|f| f.len() == 512));
+    // One closed ring: connected, and the slab is a full 16x8x4 box.
+    assert_eq!(figures[0].stats().components, 1);
+    assert_eq!(figures[1].stats().max, [15, 7, 3]);
+}
+
+#[test]
 fn manifest_json_error_names_file_line_and_column() {
     let path = Path::new("some/dir/manifest.json");
     let text = "[\n {\"name\": \"a\",\n  \"lattice\": square}\n]";
@@ -244,6 +258,7 @@ fn a_scaled_dissection_keeps_its_piece_count() {
         options: quick(),
         time_limit_2d: Some(Duration::from_secs(60)),
         time_limit_3d: None,
+        mode: Default::default(),
     };
     let mut seen = 0;
     let steps = plan
@@ -342,10 +357,13 @@ fn seed_run(seed: u64, pieces: Option<usize>, first: Option<u64>, total: u64) ->
         seed,
         pieces,
         first_valid: first.map(Duration::from_millis),
+        time_to_best: first.map(|f| Duration::from_millis(f * 2)),
         total: Duration::from_millis(total),
         cpu: Some(Duration::from_millis(total * 3 / 2)),
         variance: pieces.map(|p| p as f64 * 1.5),
         stopped: pieces.is_none(),
+        lower_bound: Some(2),
+        optimal: pieces == Some(2),
         explorations: 400 * seed as usize,
         last_level: (
             pieces.unwrap_or(6),
@@ -568,4 +586,32 @@ fn cpu_time_is_read_from_a_proc_stat_line() {
         }
         assert!(now > before, "{before:?} -> {now:?}");
     }
+}
+
+// ---------------------------------------------------------------- schedule
+
+#[test]
+fn replays_count_the_waiting_at_batch_barriers() {
+    use dissect_bench::schedule::{replay, replay_levels};
+    // 4 explorations: one slow (3 s) and three of 1 s.
+    let d = [3.0, 1.0, 1.0, 1.0];
+    // One thread: no waiting whatever the barriers.
+    let one = replay(&d, 2, 1);
+    assert_eq!((one.makespan, one.work, one.waiting()), (6.0, 6.0, 0.0));
+    // Two threads, batches of 2: {3, 1} then {1, 1}: 3 + 1 = 4 s, of 8
+    // thread-seconds 6 are work.
+    let batched = replay(&d, 2, 2);
+    assert_eq!(batched.makespan, 4.0);
+    assert!((batched.waiting() - 0.25).abs() < 1e-12);
+    // Without barriers the second thread runs the three short ones while
+    // the first runs the long one: 3 s, no waiting.
+    let free = replay(&d, 0, 2);
+    assert_eq!(free.makespan, 3.0);
+    assert_eq!(free.waiting(), 0.0);
+    // More threads than work: the slowest exploration bounds the makespan.
+    assert_eq!(replay(&d, 0, 16).makespan, 3.0);
+    assert_eq!(replay(&[], 16, 4).waiting(), 0.0);
+    // Levels add up.
+    let both = replay_levels(&[d.to_vec(), vec![2.0, 2.0]], 2, 2);
+    assert_eq!((both.makespan, both.work), (6.0, 10.0));
 }

@@ -156,12 +156,21 @@ pub struct SolveArgs {
     /// Stop refining an exploration after this many iterations without fewer conflicts (0: the paper's loop).
     #[arg(long, default_value_t = 20, value_name = "N", value_parser = whole_usize::<0>)]
     pub patience: usize,
-    /// Also prove a lower bound by SAT beside the search, and say whether the result is optimal.
-    #[arg(long)]
+    /// Prove a lower bound by SAT beside the search and say whether the result is optimal (the default).
+    #[arg(long, conflicts_with = "no_prove")]
     pub prove: bool,
-    /// Find a minimum dissection by SAT alone (small figures).
+    /// Do not run the SAT lower-bound search beside the heuristic.
     #[arg(long)]
+    pub no_prove: bool,
+    /// Find a minimum dissection by SAT alone (small figures).
+    #[arg(long, conflicts_with = "paper")]
     pub exact: bool,
+    /// Exactly the paper's schedule: levels of 2, 3, ... pieces, stopping at the first level with a valid dissection.
+    #[arg(long)]
+    pub paper: bool,
+    /// Without --time-limit, end after this many rounds in a row that found no fewer pieces.
+    #[arg(long, default_value_t = 1, value_name = "N")]
+    pub rounds: usize,
     /// Write the solution JSON here.
     #[arg(short = 'o', long = "output", value_name = "OUT.json")]
     pub output: Option<PathBuf>,
@@ -206,12 +215,21 @@ pub struct InfoArgs {
 }
 
 impl SolveArgs {
-    /// The solver settings these flags ask for, with `threads` worker threads.
-    pub fn solver_options(&self, threads: usize) -> dissect_core::solver::Options {
-        dissect_core::solver::Options {
-            mirror: !self.no_mirror && self.lattice.lattice().supports_mirror(),
+    /// The run these flags ask for (checked by the engine).
+    pub fn run_config(&self) -> dissect_engine::RunConfig {
+        dissect_engine::RunConfig {
+            strategy: if self.exact {
+                dissect_engine::Strategy::Exact
+            } else if self.paper {
+                dissect_engine::Strategy::Paper
+            } else {
+                dissect_engine::Strategy::Anytime
+            },
+            prove: !self.no_prove,
+            mirror: !self.no_mirror,
             seed: self.seed,
-            threads,
+            threads: self.threads,
+            time_limit: self.time_limit,
             max_pieces: self.max_pieces,
             area_weight: self.area_weight,
             explorations: self.explorations,
@@ -219,10 +237,11 @@ impl SolveArgs {
             iterations: self.iterations,
             split_penalty: self.split_penalty,
             split_tries: self.split_tries,
-            full_levels: self.full_level,
+            full_level: self.full_level,
             extra_rounds: self.extra_rounds,
             patience: self.patience,
-            ..dissect_core::solver::Options::default()
+            idle_rounds: self.rounds,
+            ..dissect_engine::RunConfig::default()
         }
     }
 }

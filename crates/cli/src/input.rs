@@ -4,9 +4,7 @@
 use std::path::Path;
 
 use anyhow::Result;
-use dissect_core::io::{
-    parse_figure, parse_solution, Dissection, ParseErrorKind, SolutionError, SolutionFile,
-};
+use dissect_core::io::{parse_figure, parse_solution, Dissection, ParseErrorKind, SolutionFile};
 use dissect_core::{Figure, LatticeKind};
 
 use crate::InputError;
@@ -133,19 +131,7 @@ pub fn check_writable(path: &Path) -> Result<()> {
 /// Reads a solution file.
 pub fn solution(path: &Path) -> Result<(SolutionFile, Dissection)> {
     let text = read(path, MAX_SOLUTION_BYTES)?;
-    parse_solution(&text).map_err(|e| {
-        let message = match &e {
-            SolutionError::BadCell { lattice, .. } => match bad_cell::locate(&text, *lattice) {
-                Some((line, column)) => format!(
-                    "line {line}, column {column}: {e} (a {lattice} cell is {})",
-                    bad_cell::form(*lattice)
-                ),
-                None => format!("{e} (a {lattice} cell is {})", bad_cell::form(*lattice)),
-            },
-            _ => e.to_string(),
-        };
-        InputError(format!("{}: {message}", path.display())).into()
-    })
+    parse_solution(&text).map_err(|e| InputError(format!("{}: {e}", path.display())).into())
 }
 
 /// Fails when a lattice asked for on the command line is not the
@@ -171,83 +157,4 @@ pub fn file_name(path: &Path) -> String {
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     )
-}
-
-/// Finds where a cell of the wrong shape is in a solution text: a second
-/// reading of `figures[*].pieces[*][*]` that fails at the first bad cell, so
-/// that serde_json reports its line and column.
-mod bad_cell {
-    use std::cell::Cell;
-
-    use dissect_core::LatticeKind;
-    use serde::de::{Deserialize, Deserializer, Error};
-
-    thread_local! {
-        /// The lattice whose cells are expected (serde has no other way to
-        /// pass it to a derived reader).
-        static LATTICE: Cell<LatticeKind> = const { Cell::new(LatticeKind::Square) };
-    }
-
-    #[derive(serde::Deserialize)]
-    struct Document {
-        #[allow(dead_code)] // read only for its checks
-        figures: Vec<Figure>,
-    }
-
-    #[derive(serde::Deserialize)]
-    struct Figure {
-        #[allow(dead_code)] // read only for its checks
-        pieces: Vec<Vec<CheckedCell>>,
-    }
-
-    struct CheckedCell;
-
-    impl<'de> Deserialize<'de> for CheckedCell {
-        fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-            let v = Vec::<i64>::deserialize(d)?;
-            let lattice = LATTICE.with(Cell::get);
-            let arity = lattice.cell_arity();
-            let fits = v.len() == arity
-                && v.iter().all(|c| i32::try_from(*c).is_ok())
-                && (lattice != LatticeKind::Tri4 || (0..4).contains(&v[2]));
-            if fits {
-                Ok(CheckedCell)
-            } else {
-                Err(D::Error::custom("bad cell"))
-            }
-        }
-    }
-
-    /// The 1-based line and column of the `[` that opens the first bad cell.
-    pub fn locate(text: &str, lattice: LatticeKind) -> Option<(usize, usize)> {
-        LATTICE.with(|l| l.set(lattice));
-        let e = serde_json::from_str::<Document>(text).err()?;
-        if e.line() == 0 {
-            return None;
-        }
-        // serde_json stops just after the cell's `]`; a cell holds only
-        // numbers, so its `[` is the last one before that.
-        let line_start: usize = text
-            .split_inclusive('\n')
-            .take(e.line() - 1)
-            .map(str::len)
-            .sum();
-        let end = text[line_start..]
-            .char_indices()
-            .nth(e.column().saturating_sub(1))
-            .map_or(text.len(), |(i, _)| line_start + i);
-        let open = text[..end].rfind('[')?;
-        let line = text[..open].matches('\n').count() + 1;
-        let from = text[..open].rfind('\n').map_or(0, |i| i + 1);
-        Some((line, text[from..open].chars().count() + 1))
-    }
-
-    /// How a cell of `lattice` is written.
-    pub fn form(lattice: LatticeKind) -> &'static str {
-        match lattice {
-            LatticeKind::Square | LatticeKind::Tri3 | LatticeKind::Hex => "[x, y]",
-            LatticeKind::Tri4 => "[x, y, t] with t in 0..=3",
-            LatticeKind::Cubic => "[x, y, z]",
-        }
-    }
 }

@@ -12,7 +12,8 @@ use crate::InputError;
 
 /// Writes `bytes` to `path` atomically (temporary file + rename). The
 /// folder must exist; it is never created here.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+pub fn write_atomic(path: &Path, bytes: impl AsRef<[u8]>) -> Result<()> {
+    let bytes = bytes.as_ref();
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),

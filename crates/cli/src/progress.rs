@@ -34,6 +34,18 @@ impl Progress {
         }
     }
 
+    /// One line on stderr (above the bar on a terminal); nothing when quiet.
+    pub fn line(&self, text: &str) {
+        match self {
+            Progress::Quiet => {}
+            Progress::Lines { .. } => stderr_line(text),
+            Progress::Bar { bar, .. } => match bar.lock().expect("bar lock").as_ref() {
+                Some(b) => b.suspend(|| stderr_line(text)),
+                None => stderr_line(text),
+            },
+        }
+    }
+
     pub fn finish(&self) {
         if let Progress::Bar { bar, .. } = self {
             if let Some(b) = bar.lock().expect("bar lock").take() {

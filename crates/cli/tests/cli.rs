@@ -8,6 +8,8 @@
 #[path = "cli/support.rs"]
 mod support;
 
+#[path = "cli/anytime.rs"]
+mod anytime;
 #[path = "cli/bad_input.rs"]
 mod bad_input;
 #[path = "cli/display.rs"]

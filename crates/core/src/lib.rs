@@ -18,7 +18,7 @@ pub mod verify;
 
 pub use figure::Figure;
 pub use lattice::{Cell, Lattice, LatticeKind};
-pub use solver::{solve, Options};
+pub use solver::{solve, solve_anytime, Options};
 
 #[cfg(test)]
 mod tests;

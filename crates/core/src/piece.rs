@@ -20,7 +20,12 @@ pub(crate) struct Pieces {
 impl Pieces {
     /// The pieces `0..k` of `shape` under `labels` (every label `< k`).
     pub(crate) fn of(shape: &Shape, labels: &[u16], k: usize) -> Pieces {
-        let mut members = vec![Vec::new(); k];
+        // Sizes first, so every member list is allocated once.
+        let mut sizes = vec![0usize; k];
+        for &l in labels {
+            sizes[l as usize] += 1;
+        }
+        let mut members: Vec<Vec<u32>> = sizes.iter().map(|&n| Vec::with_capacity(n)).collect();
         let mut sums = vec![[0i64; 3]; k];
         for (c, &l) in labels.iter().enumerate() {
             let l = l as usize;

@@ -580,6 +580,12 @@ function showProgress(s) {
   $('#p-done').textContent = s.total ? `${s.done} / ${s.total} (all: ${s.explorations})` : `${s.explorations}`;
   $('#p-score').textContent = fmt(s.best_score, 2);
   $('#p-mismatch').textContent = s.best_mismatch ?? '—';
+  // Improvements live: the fewest pieces so far, when, and the optimal mark
+  // once the lower bound meets it.
+  const last = s.history && s.history.length ? s.history[s.history.length - 1] : null;
+  $('#p-best').textContent = last ? `${last.pieces} pieces at ${fmt(last.seconds, 1)} s (${last.by})` : '—';
+  $('#p-bound').textContent = s.lower_bound == null ? '—' : `${s.lower_bound}${s.optimal ? ' — optimal' : ''}`;
+  $('#p-bound').classList.toggle('optimal', !!s.optimal);
   $('#p-elapsed').textContent = `${fmt(s.elapsed, 1)} s`;
   $('#meter-fill').style.width = s.total ? `${Math.min(100, (100 * s.done) / s.total)}%` : '0';
 }
@@ -674,7 +680,7 @@ function showResult() {
   const sol = r.solution;
   $('#result').hidden = false;
   $('#result-summary').textContent =
-    `${r.pieces} pieces · area variance ${Number(r.area_variance).toFixed(2)} · piece areas ${r.areas.join(', ')} · ` +
+    `${r.pieces} pieces${r.optimal ? ' (optimal)' : ` (lower bound ${r.lower_bound})`} · area variance ${Number(r.area_variance).toFixed(2)} · piece areas ${r.areas.join(', ')} · ` +
     `${r.seconds.toFixed(2)} s${r.stopped ? ' (stopped: best found so far)' : ''}`;
   const legend = $('#legend');
   legend.textContent = '';

@@ -40,32 +40,27 @@ pub fn name_of(input: &FigureInput, index: usize) -> String {
     }
 }
 
-/// One cell of the JSON form, checked against the lattice and the limits.
+/// One cell of the JSON form, checked against the lattice
+/// ([`LatticeKind::cell_from_coords`]) and the limits. A 2D cell may also be
+/// given with a third coordinate of 0.
 fn cell(raw: &[i64], lattice: LatticeKind, limits: &Limits) -> Result<Cell, String> {
-    let want = lattice.cell_arity();
-    let ok_len = raw.len() == want || (want == 2 && raw.len() == 3);
-    if !ok_len {
-        return Err(format!(
-            "cell {raw:?} should have {want} coordinates on the {lattice} lattice"
-        ));
-    }
+    let coords = match raw {
+        [x, y, 0] if lattice.cell_arity() == 2 => &[*x, *y][..],
+        _ => raw,
+    };
+    let c = lattice.cell_from_coords(coords).ok_or_else(|| {
+        format!(
+            "{raw:?} is not a cell of the {lattice} lattice (a {lattice} cell is {})",
+            lattice.cell_form()
+        )
+    })?;
     let ext = limits.max_extent() as i64;
-    let mut c = [0i32; 3];
-    for (i, v) in raw.iter().enumerate() {
-        let bound = if i == 2 && lattice != LatticeKind::Cubic {
-            3
-        } else {
-            ext
-        };
-        if v.abs() > bound {
-            return Err(format!(
-                "cell {raw:?} is out of range (coordinates at most {ext} in size)"
-            ));
-        }
-        c[i] = *v as i32;
-    }
-    if !lattice.lattice().is_cell(c) {
-        return Err(format!("{raw:?} is not a cell of the {lattice} lattice"));
+    if raw.iter().take(2).any(|v| v.abs() > ext)
+        || (lattice == LatticeKind::Cubic && raw[2].abs() > ext)
+    {
+        return Err(format!(
+            "cell {raw:?} is out of range (coordinates at most {ext} in size)"
+        ));
     }
     Ok(c)
 }

@@ -1,17 +1,18 @@
-//! Solve jobs: each runs the core solver on a blocking thread with its own
-//! stop flag; its progress is published as a [`Snapshot`] that the
-//! server-sent event stream and the status route read.
+//! Solve jobs: each runs the engine (`dissect_engine::run`: the anytime
+//! search and the exact search side by side, its own time limit) on a
+//! blocking thread with its own stop flag; its progress is published as a
+//! [`Snapshot`] that the server-sent event stream and the status route read.
 
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
-use dissect_core::io::Dissection;
-use dissect_core::solver::{solve, Event, Observer, Options, Outcome};
+use dissect_core::solver::Event;
 use dissect_core::{Figure, LatticeKind};
+use dissect_engine::{EngineEvent, EngineObserver, Report, RunOptions};
 use serde::Serialize;
-use serde_json::{json, Map, Value};
+use serde_json::{json, Value};
 use tokio::sync::{watch, OwnedSemaphorePermit, Semaphore};
 
 use crate::error::ApiError;
@@ -54,8 +55,16 @@ pub struct Snapshot {
     pub best_mismatch: Option<u64>,
     /// Seconds since the start (at the time of the snapshot).
     pub elapsed: f64,
-    /// Whether Stop was asked (by a client or the time limit).
+    /// Whether Stop was asked by a client.
     pub stop_requested: bool,
+    /// The fewest pieces found so far.
+    pub best_pieces: Option<usize>,
+    /// The best lower bound proved so far.
+    pub lower_bound: Option<usize>,
+    /// Whether the best so far meets the lower bound.
+    pub optimal: bool,
+    /// Every improvement so far: `{pieces, seconds, by}`.
+    pub history: Vec<Value>,
     /// The result once done: see [`result_json`].
     pub result: Option<Value>,
     /// The error once failed.
@@ -101,29 +110,29 @@ impl Job {
     }
 }
 
-impl Observer for Job {
-    fn on_event(&self, event: &Event) {
+impl EngineObserver for Job {
+    fn on_event(&self, event: &EngineEvent<'_>) {
         let finite = |v: f64| v.is_finite().then_some(v);
         self.tx.send_modify(|s| {
             match event {
-                Event::LevelStarted {
+                EngineEvent::Search(Event::LevelStarted {
                     level,
                     pieces,
                     explorations,
-                } => {
+                }) => {
                     s.level = *level;
                     s.pieces = *pieces;
                     s.done = 0;
                     s.total = *explorations;
                     s.best_score = None;
                 }
-                Event::Exploration {
+                EngineEvent::Search(Event::Exploration {
                     level,
                     done,
                     total,
                     best_score,
                     best_mismatch,
-                } => {
+                }) => {
                     s.level = *level;
                     s.done = s.done.max(*done);
                     s.total = *total;
@@ -131,18 +140,28 @@ impl Observer for Job {
                     s.best_score = finite(*best_score);
                     s.best_mismatch = Some(*best_mismatch);
                 }
-                Event::LevelFinished {
+                EngineEvent::Search(Event::LevelFinished {
                     level,
                     pieces,
                     best_mismatch,
                     ..
-                } => {
+                }) => {
                     s.level = *level;
                     s.pieces = *pieces;
                     s.best_mismatch = Some(*best_mismatch);
                 }
+                EngineEvent::Improved(i) => {
+                    s.best_pieces = Some(i.pieces);
+                    s.history.push(json!({
+                        "pieces": i.pieces,
+                        "seconds": (i.seconds * 1000.0).round() / 1000.0,
+                        "by": i.source.name(),
+                    }));
+                }
+                EngineEvent::LowerBound(b) => s.lower_bound = Some(b.value),
                 _ => {}
             }
+            s.optimal = matches!((s.best_pieces, s.lower_bound), (Some(p), Some(b)) if p <= b);
             s.elapsed = self.started.elapsed().as_secs_f64();
         });
     }
@@ -156,10 +175,8 @@ pub struct Request {
     pub figures: Vec<Figure>,
     /// Their names.
     pub names: Vec<String>,
-    /// Solver options (mirror, seed, area weight, threads, ...).
-    pub options: Options,
-    /// Seconds until the solve is stopped.
-    pub time_limit: f64,
+    /// The run's options (checked by the engine), time limit included.
+    pub options: RunOptions,
 }
 
 /// All jobs of a server.
@@ -217,6 +234,10 @@ impl Jobs {
             best_mismatch: None,
             elapsed: 0.0,
             stop_requested: false,
+            best_pieces: None,
+            lower_bound: None,
+            optimal: false,
+            history: Vec::new(),
             result: None,
             error: None,
         });
@@ -248,29 +269,25 @@ impl Jobs {
 }
 
 fn spawn(job: Arc<Job>, request: Request, permit: OwnedSemaphorePermit) {
-    // The time limit: a task that raises the stop flag unless the job ends first.
-    let limit = Duration::from_secs_f64(request.time_limit);
-    let timer_job = Arc::clone(&job);
-    let mut rx = job.subscribe();
-    tokio::spawn(async move {
-        tokio::select! {
-            _ = tokio::time::sleep(limit) => timer_job.stop(),
-            _ = rx.wait_for(|s| s.state != State::Running) => {}
-        }
-    });
+    // The time limit is the engine's (in the run options).
     let worker = Arc::clone(&job);
     let handle = tokio::task::spawn_blocking(move || {
-        let outcome = solve(&request.figures, &request.options, &worker.stop, &*worker);
-        let elapsed = worker.started.elapsed().as_secs_f64();
-        (outcome, request, elapsed)
+        let report = dissect_engine::run(
+            &request.figures,
+            &request.names,
+            &request.options,
+            &worker.stop,
+            &*worker,
+        );
+        (report, request)
     });
     tokio::spawn(async move {
         let (state, result, error) = match handle.await {
-            Ok((Ok(outcome), request, elapsed)) => match result_json(&request, &outcome, elapsed) {
+            Ok((Ok(report), request)) => match result_json(&request, &report) {
                 Ok(v) => (State::Done, Some(v), None),
                 Err(e) => (State::Failed, None, Some(e)),
             },
-            Ok((Err(e), _, _)) => (State::Failed, None, Some(e.to_string())),
+            Ok((Err(e), _)) => (State::Failed, None, Some(e.to_string())),
             Err(e) => (
                 State::Failed,
                 None,
@@ -280,6 +297,9 @@ fn spawn(job: Arc<Job>, request: Request, permit: OwnedSemaphorePermit) {
         drop(permit);
         let elapsed = job.started.elapsed().as_secs_f64();
         job.tx.send_modify(|s| {
+            if let Some(r) = &result {
+                s.optimal = r["optimal"] == Value::Bool(true);
+            }
             s.state = state;
             s.result = result;
             s.error = error;
@@ -293,56 +313,39 @@ fn spawn(job: Arc<Job>, request: Request, permit: OwnedSemaphorePermit) {
 /// ```json
 /// {"found": true, "stopped": false, "pieces": 4, "areas": [..], "area_variance": 1.5,
 ///  "level": 3, "explorations": 812, "best_mismatch": 0, "seconds": 0.4,
+///  "lower_bound": 4, "lower_bound_reason": "...", "optimal": true,
+///  "found_by": "search", "time_to_first": 0.01, "time_to_best": 0.3,
+///  "history": [{"pieces": 5, "seconds": 0.01, "by": "greedy"}, ...],
 ///  "solution": { dissection-solution/1 ... }}
 /// ```
 ///
-/// `solution` is present only when a dissection was found; it has been
-/// checked by the core verifier.
-pub fn result_json(request: &Request, outcome: &Outcome, elapsed: f64) -> Result<Value, String> {
-    let seconds = (elapsed * 1000.0).round() / 1000.0;
-    let Some(found) = &outcome.found else {
+/// `solution` is present only when a dissection was found; the engine
+/// verified it (it holds only `Verified` dissections).
+pub fn result_json(request: &Request, report: &Report) -> Result<Value, String> {
+    let seconds = (report.seconds * 1000.0).round() / 1000.0;
+    let stopped = report.end.stopped();
+    let mut extra = report.extra();
+    let Some(best) = &report.best else {
         return Ok(json!({
             "found": false,
-            "stopped": outcome.stopped,
-            "last_pieces": outcome.last_pieces,
-            "best_mismatch": outcome.best_mismatch,
-            "explorations": outcome.explorations,
+            "stopped": stopped,
+            "last_pieces": report.last_pieces,
+            "best_mismatch": report.best_mismatch,
+            "explorations": report.explorations,
+            "lower_bound": report.lower_bound.value,
             "seconds": seconds,
         }));
     };
-    let dissection = Dissection {
-        lattice: request.lattice,
-        mirror: request.options.mirror && request.lattice.lattice().supports_mirror(),
-        names: request.names.clone(),
-        pieces: found.pieces.clone(),
-    };
-    if let Err(v) = dissect_core::verify::verify(&dissection, &request.figures) {
-        return Err(format!(
-            "the solver's dissection failed verification: {}",
-            v[0]
-        ));
-    }
-    let mut extra = Map::new();
-    extra.insert("pieces".into(), json!(found.piece_count()));
-    extra.insert("areas".into(), json!(found.areas()));
-    extra.insert("area_variance".into(), json!(found.variance));
-    extra.insert("seed".into(), json!(request.options.seed));
-    extra.insert("seconds".into(), json!(seconds));
-    extra.insert("level".into(), json!(found.level));
-    extra.insert("explorations".into(), json!(outcome.explorations));
-    extra.insert("stopped_early".into(), Value::Bool(outcome.stopped));
-    let file = dissection.to_file(extra);
-    Ok(json!({
-        "found": true,
-        "stopped": outcome.stopped,
-        "pieces": found.piece_count(),
-        "areas": found.areas(),
-        "area_variance": found.variance,
-        "level": found.level,
-        "explorations": outcome.explorations,
-        "best_mismatch": 0,
-        "seconds": seconds,
-        "solution_text": file.to_json(),
-        "solution": serde_json::to_value(&file).map_err(|e| e.to_string())?,
-    }))
+    let _ = request;
+    let file = best.dissection().to_file(extra.clone());
+    extra.insert("found".into(), Value::Bool(true));
+    extra.insert("stopped".into(), Value::Bool(stopped));
+    extra.insert("best_mismatch".into(), json!(0));
+    extra.insert("level".into(), json!(report.level));
+    extra.insert("solution_text".into(), json!(file.to_json()));
+    extra.insert(
+        "solution".into(),
+        serde_json::to_value(&file).map_err(|e| e.to_string())?,
+    );
+    Ok(Value::Object(extra))
 }

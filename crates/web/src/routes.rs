@@ -27,7 +27,7 @@ use axum::response::sse::{Event as SseEvent, KeepAlive, Sse};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use axum::{Json, Router};
-use dissect_core::solver::Options;
+use dissect_engine::{RunConfig, RunOptions};
 use futures_util::Stream;
 use serde::de::DeserializeOwned;
 use serde::Deserialize;
@@ -215,13 +215,6 @@ async fn start_solve(
     }
     let figs = figures::read_all(&req.figures, lattice, &s.limits)?;
     figures::check_equal_areas(&req.figures, &figs)?;
-    let defaults = Options::default();
-    let area_weight = req.area_weight.unwrap_or(defaults.area_weight);
-    if !(area_weight.is_finite() && (0.0..=1000.0).contains(&area_weight)) {
-        return Err(ApiError::BadValue(format!(
-            "area_weight must be a number from 0 to 1000, got {area_weight}"
-        )));
-    }
     let max_t = s.limits.max_time_limit();
     let time_limit = req.time_limit.unwrap_or(max_t);
     if !(time_limit.is_finite() && time_limit > 0.0 && time_limit <= max_t) {
@@ -229,25 +222,27 @@ async fn start_solve(
             "time_limit must be more than 0 and at most {max_t} seconds, got {time_limit}"
         )));
     }
-    let explorations = req.explorations.unwrap_or(defaults.explorations);
-    if !(1..=10_000).contains(&explorations) {
+    let explorations = req
+        .explorations
+        .unwrap_or(RunConfig::default().explorations);
+    if explorations > 10_000 {
         return Err(ApiError::BadValue(format!(
-            "explorations must be from 1 to 10000, got {explorations}"
+            "explorations must be from 1 to 10000 on this server, got {explorations}"
         )));
     }
-    if req.max_pieces == Some(0) {
-        return Err(ApiError::BadValue("max_pieces must be at least 1".into()));
-    }
-    let mirror = req.mirror.unwrap_or(true) && lattice.lattice().supports_mirror();
-    let options = Options {
-        mirror,
+    // Every other rule on the settings is the engine's.
+    let defaults = RunConfig::default();
+    let options = RunOptions::new(RunConfig {
+        mirror: req.mirror.unwrap_or(true),
         seed: req.seed.unwrap_or(defaults.seed),
         threads: s.limits.threads(),
-        area_weight,
+        area_weight: req.area_weight.unwrap_or(defaults.area_weight),
         explorations,
         max_pieces: req.max_pieces,
-        ..Options::default()
-    };
+        time_limit: Some(time_limit),
+        ..defaults
+    })
+    .map_err(|e| ApiError::BadValue(api_name(&e.to_string())))?;
     let names = req
         .figures
         .iter()
@@ -259,7 +254,6 @@ async fn start_solve(
         figures: figs,
         names,
         options,
-        time_limit,
     })?;
     let id = job.id();
     Ok((
@@ -405,4 +399,14 @@ async fn rasterize_picture(
     .await
     .map_err(|e| ApiError::Internal(format!("the rasterizer failed: {e}")))??;
     Ok(Json(v))
+}
+
+/// An engine message about a setting (`--area-weight must ...`) with the
+/// setting named as the API spells it (`area_weight must ...`).
+fn api_name(message: &str) -> String {
+    let m = message.strip_prefix("--").unwrap_or(message);
+    match m.split_once(' ') {
+        Some((name, rest)) => format!("{} {rest}", name.replace('-', "_")),
+        None => m.to_string(),
+    }
 }

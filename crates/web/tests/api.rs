@@ -120,7 +120,7 @@ async fn bad_figures_and_options_name_the_problem() {
         ),
         (
             json!({"lattice": "tri4", "figures": [{"cells": [[0, 0, 7]]}, {"cells": [[0, 0, 1]]}]}),
-            "out of range",
+            "is not a cell of the tri4 lattice (a tri4 cell is [x, y, t] with t in 0..=3)",
         ),
         (
             json!({"lattice": "square", "figures": [{"text": "##"}, {"text": "##"}], "area_weight": -1}),

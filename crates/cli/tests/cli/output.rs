@@ -35,7 +35,7 @@ fn quiet_prints_nothing() {
 fn without_a_terminal_progress_is_one_plain_line_per_level() {
     let sb = Sandbox::new();
     let [a, b] = pair(&sb);
-    let run = sb.run(&["solve", "-o", "out.json", &a, &b]);
+    let run = sb.run(&["solve", "--paper", "--no-prove", "-o", "out.json", &a, &b]);
     run.expect_code(0);
     assert!(
         !run.stderr.contains('\x1b') && !run.stderr.contains('\r'),
@@ -89,7 +89,7 @@ fn on_a_terminal_progress_is_a_bar() {
     let sb = Sandbox::new();
     let [a, b] = pair(&sb);
     let command = format!(
-        "{} solve --color never -o out.json {a} {b}",
+        "{} solve --paper --no-prove --color never -o out.json {a} {b}",
         env!("CARGO_BIN_EXE_dissect")
     );
     let out = std::process::Command::new("script")

@@ -19,6 +19,8 @@ fn time_limit_ends_a_big_search_within_seconds() {
     let [a, b] = big(&sb);
     let run = sb.run(&[
         "solve",
+        "--paper",
+        "--no-prove",
         "--lattice",
         "cubic",
         "--time-limit",
@@ -49,9 +51,11 @@ fn time_limit_keeps_a_dissection_found_before_it() {
     let b = sb.write("ell.txt", "##\n#.\n");
     let run = sb.run(&[
         "solve",
+        "--paper",
+        "--no-prove",
         "--full-level",
         "--explorations",
-        "2000000",
+        "1000000",
         "--time-limit",
         "0.5",
         "-o",
@@ -74,8 +78,17 @@ fn time_limit_keeps_a_dissection_found_before_it() {
 fn ctrl_c_before_a_dissection_exits_1_with_the_best_score() {
     let sb = Sandbox::new();
     let [a, b] = big(&sb);
-    let running =
-        sb.spawn_until_first_line(&["solve", "--lattice", "cubic", "-o", "out.json", &a, &b]);
+    let running = sb.spawn_until_first_line(&[
+        "solve",
+        "--paper",
+        "--no-prove",
+        "--lattice",
+        "cubic",
+        "-o",
+        "out.json",
+        &a,
+        &b,
+    ]);
     assert!(running.first.starts_with("level 0 "), "{}", running.first);
     std::thread::sleep(Duration::from_millis(300));
     running.signal("INT");
@@ -94,9 +107,11 @@ fn ctrl_c_after_a_dissection_writes_it_and_exits_0() {
     let b = sb.write("ell.txt", "##\n#.\n");
     let running = sb.spawn_until_first_line(&[
         "solve",
+        "--paper",
+        "--no-prove",
         "--full-level",
         "--explorations",
-        "2000000",
+        "1000000",
         "-o",
         "out.json",
         &a,
@@ -115,7 +130,15 @@ fn ctrl_c_after_a_dissection_writes_it_and_exits_0() {
 fn sigterm_stops_like_ctrl_c() {
     let sb = Sandbox::new();
     let [a, b] = big(&sb);
-    let running = sb.spawn_until_first_line(&["solve", "--lattice", "cubic", &a, &b]);
+    let running = sb.spawn_until_first_line(&[
+        "solve",
+        "--paper",
+        "--no-prove",
+        "--lattice",
+        "cubic",
+        &a,
+        &b,
+    ]);
     std::thread::sleep(Duration::from_millis(200));
     running.signal("TERM");
     let run = running.wait(Duration::from_secs(3));

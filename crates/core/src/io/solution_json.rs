@@ -4,10 +4,6 @@ use serde::{Deserialize, Serialize};
 
 use crate::lattice::{Cell, LatticeKind};
 
-/// The largest coordinate a solution cell may have (so that lattice points,
-/// up to 6 times larger, stay far from overflow).
-pub const MAX_COORDINATE: i64 = 1 << 24;
-
 /// The value of the `format` key.
 pub const SOLUTION_FORMAT: &str = "dissection-solution/1";
 
@@ -77,9 +73,17 @@ pub enum SolutionError {
     /// Occurs when `lattice` is not a known lattice.
     #[error("unknown lattice {0:?} (expected square, tri4, cubic, tri3 or hex)")]
     UnknownLattice(String),
-    /// Occurs when a cell does not have the lattice's form.
-    #[error("figure {figure} piece {piece}: bad cell {cell:?} for the {lattice} lattice")]
+    /// Occurs when a cell does not have the lattice's form
+    /// ([`LatticeKind::cell_from_coords`]).
+    #[error(
+        "line {line}, column {column}: figure {figure} piece {piece}: bad cell {cell:?} for the {lattice} lattice (a {lattice} cell is {form})",
+        form = lattice.cell_form()
+    )]
     BadCell {
+        /// 1-based line of the cell's `[`.
+        line: usize,
+        /// 1-based column of the cell's `[`.
+        column: usize,
         /// Figure index.
         figure: usize,
         /// Piece index.
@@ -120,24 +124,17 @@ pub fn parse_solution(text: &str) -> Result<(SolutionFile, Dissection), Solution
         for (pi, piece) in fig.pieces.iter().enumerate() {
             let mut cells = Vec::with_capacity(piece.len());
             for cell in piece {
-                let bad = || SolutionError::BadCell {
-                    figure: fi,
-                    piece: pi,
-                    cell: cell.clone(),
-                    lattice,
+                let Some(c) = lattice.cell_from_coords(cell) else {
+                    let (line, column) = bad_cell::locate(text, lattice).unwrap_or((0, 0));
+                    return Err(SolutionError::BadCell {
+                        line,
+                        column,
+                        figure: fi,
+                        piece: pi,
+                        cell: cell.clone(),
+                        lattice,
+                    });
                 };
-                let want = lattice.cell_arity();
-                if cell.len() != want || cell.iter().any(|v| v.abs() > MAX_COORDINATE) {
-                    return Err(bad());
-                }
-                let c = [
-                    cell[0] as i32,
-                    cell[1] as i32,
-                    if want == 3 { cell[2] as i32 } else { 0 },
-                ];
-                if !l.is_cell(c) {
-                    return Err(bad());
-                }
                 cells.push(c);
             }
             fp.push(cells);
@@ -159,13 +156,7 @@ pub fn parse_solution(text: &str) -> Result<(SolutionFile, Dissection), Solution
 impl Dissection {
     /// The file form, with `extra` keys added after the contract's keys.
     pub fn to_file(&self, extra: serde_json::Map<String, serde_json::Value>) -> SolutionFile {
-        let cell_json = |c: &Cell| -> Vec<i64> {
-            if self.lattice.cell_arity() == 2 {
-                vec![c[0] as i64, c[1] as i64]
-            } else {
-                c.iter().map(|v| *v as i64).collect()
-            }
-        };
+        let cell_json = |c: &Cell| -> Vec<i64> { self.lattice.cell_coords(*c) };
         SolutionFile {
             format: Some(SOLUTION_FORMAT.to_string()),
             lattice: self.lattice.name().to_string(),
@@ -232,5 +223,71 @@ mod erased {
         fn json(&self) -> String {
             serde_json::to_string(self).expect("serialisable")
         }
+    }
+}
+
+/// Finds where the first bad cell is in a solution text: a second reading of
+/// `figures[*].pieces[*][*]` that fails at the first cell
+/// [`LatticeKind::cell_from_coords`] refuses, so that serde_json reports its
+/// line and column.
+mod bad_cell {
+    use std::cell::Cell;
+
+    use serde::de::{Deserialize, Deserializer, Error};
+
+    use crate::lattice::LatticeKind;
+
+    thread_local! {
+        /// The lattice whose cells are expected (serde has no other way to
+        /// pass it to a derived reader).
+        static LATTICE: Cell<LatticeKind> = const { Cell::new(LatticeKind::Square) };
+    }
+
+    #[derive(serde::Deserialize)]
+    struct Document {
+        #[allow(dead_code)] // read only for its checks
+        figures: Vec<Figure>,
+    }
+
+    #[derive(serde::Deserialize)]
+    struct Figure {
+        #[allow(dead_code)] // read only for its checks
+        pieces: Vec<Vec<CheckedCell>>,
+    }
+
+    struct CheckedCell;
+
+    impl<'de> Deserialize<'de> for CheckedCell {
+        fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            let v = Vec::<i64>::deserialize(d)?;
+            match LATTICE.with(Cell::get).cell_from_coords(&v) {
+                Some(_) => Ok(CheckedCell),
+                None => Err(D::Error::custom("bad cell")),
+            }
+        }
+    }
+
+    /// The 1-based line and column of the `[` that opens the first bad cell.
+    pub(super) fn locate(text: &str, lattice: LatticeKind) -> Option<(usize, usize)> {
+        LATTICE.with(|l| l.set(lattice));
+        let e = serde_json::from_str::<Document>(text).err()?;
+        if e.line() == 0 {
+            return None;
+        }
+        // serde_json stops just after the cell's `]`; a cell holds only
+        // numbers, so its `[` is the last one before that.
+        let line_start: usize = text
+            .split_inclusive('\n')
+            .take(e.line() - 1)
+            .map(str::len)
+            .sum();
+        let end = text[line_start..]
+            .char_indices()
+            .nth(e.column().saturating_sub(1))
+            .map_or(text.len(), |(i, _)| line_start + i);
+        let open = text[..end].rfind('[')?;
+        let line = text[..open].matches('\n').count() + 1;
+        let from = text[..open].rfind('\n').map_or(0, |i| i + 1);
+        Some((line, text[from..open].chars().count() + 1))
     }
 }

@@ -22,6 +22,10 @@ pub use tri4::Tri4;
 use std::fmt;
 use std::str::FromStr;
 
+/// The largest coordinate a cell may have in a file (so that lattice points,
+/// up to 6 times larger, stay far from overflow).
+pub const MAX_COORDINATE: i64 = 1 << 24;
+
 /// A cell in a figure's own coordinates.
 ///
 /// * `square`: `[x, y, 0]`
@@ -228,6 +232,41 @@ impl LatticeKind {
             LatticeKind::Square | LatticeKind::Tri3 | LatticeKind::Hex => 2,
             LatticeKind::Tri4 | LatticeKind::Cubic => 3,
         }
+    }
+
+    /// How a cell is written in solution files (for error messages).
+    pub fn cell_form(self) -> &'static str {
+        match self {
+            LatticeKind::Square | LatticeKind::Tri3 | LatticeKind::Hex => "[x, y]",
+            LatticeKind::Tri4 => "[x, y, t] with t in 0..=3",
+            LatticeKind::Cubic => "[x, y, z]",
+        }
+    }
+
+    /// The cell written as `coords` in a file: [`LatticeKind::cell_arity`]
+    /// numbers, each at most [`MAX_COORDINATE`] in size, that make a valid
+    /// cell of this lattice; `None` otherwise. The one rule for reading
+    /// cells, used by the solution reader, the CLI and the studio.
+    pub fn cell_from_coords(self, coords: &[i64]) -> Option<Cell> {
+        let want = self.cell_arity();
+        if coords.len() != want || coords.iter().any(|v| v.abs() > MAX_COORDINATE) {
+            return None;
+        }
+        let cell = [
+            coords[0] as i32,
+            coords[1] as i32,
+            if want == 3 { coords[2] as i32 } else { 0 },
+        ];
+        self.lattice().is_cell(cell).then_some(cell)
+    }
+
+    /// The coordinates a cell is written with in files (the inverse of
+    /// [`LatticeKind::cell_from_coords`]).
+    pub fn cell_coords(self, cell: Cell) -> Vec<i64> {
+        cell[..self.cell_arity()]
+            .iter()
+            .map(|v| *v as i64)
+            .collect()
     }
 
     /// Whether a figure file has one `#`/`.` character per cell (`square`,

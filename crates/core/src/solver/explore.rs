@@ -14,7 +14,7 @@ use std::sync::atomic::AtomicBool;
 
 use crate::figure::Figure;
 use crate::solver::candidate::{Candidate, Problem, Score};
-use crate::solver::{levels, problem_of, stream, Options, SolveError};
+use crate::solver::{levels, problem_of, stream, Options, SolveError, DESCENT};
 
 /// One exploration's result (or a kept candidate handed to the next level
 /// as a parent): a labelling of every figure and its score.
@@ -206,6 +206,9 @@ pub struct Batch<'a> {
     pub round: usize,
     /// The level (`level + 1` pieces).
     pub level: usize,
+    /// Whether these are steps of the descent (one piece fewer than the
+    /// only parent, a dissection) rather than the ladder's explorations.
+    pub descent: bool,
     /// The explorations' indices.
     pub indices: Range<usize>,
     /// The kept candidates of the level below (empty at level 1).
@@ -237,13 +240,14 @@ impl Explorer {
         })
     }
 
-    /// Exploration `index` of `level` in `round` from `parents`. Raising
-    /// `stop` cuts its refinement short (the result then differs from an
-    /// unstopped one).
+    /// Exploration `index` of `level` in `round` from `parents` (of the
+    /// descent when `descent`, see [`Batch::descent`]). Raising `stop` cuts
+    /// its refinement short (the result then differs from an unstopped one).
     pub fn explore(
         &self,
         round: usize,
         level: usize,
+        descent: bool,
         index: usize,
         parents: &[Exploration],
         stop: &AtomicBool,
@@ -251,12 +255,19 @@ impl Explorer {
         for p in parents {
             p.check(&self.problem)?;
         }
+        if descent && parents.len() != 1 {
+            return Err(ExplorationError::Mismatch(format!(
+                "a descent step has one parent, got {}",
+                parents.len()
+            )));
+        }
         let (candidate, score) = explore_one(
             &self.problem,
             &self.options,
             round,
             level,
             index,
+            descent,
             parents.len(),
             |i| &parents[i].candidate,
             stop,
@@ -265,9 +276,10 @@ impl Explorer {
     }
 }
 
-/// Exploration `index` of `level`: level 1 from scratch, above it grown
-/// from one of `parent_count` parents drawn from its stream. The one
-/// definition every executor's result must equal.
+/// Exploration `index` of `level` in `round`: level 1 from scratch, above
+/// it grown from one of `parent_count` parents drawn from its stream; in
+/// the descent, the only parent (a dissection) with two pieces merged. The
+/// one definition every executor's result must equal.
 #[allow(clippy::too_many_arguments)] // one exploration's whole identity
 pub(crate) fn explore_one<'p>(
     problem: &Problem,
@@ -275,12 +287,16 @@ pub(crate) fn explore_one<'p>(
     round: usize,
     level: usize,
     index: usize,
+    descent: bool,
     parent_count: usize,
     parent: impl Fn(usize) -> &'p Candidate,
     stop: &AtomicBool,
 ) -> (Candidate, Score) {
-    debug_assert_eq!(round, 0, "rounds come with the anytime schedule");
-    let mut rng = stream(options.seed, level, index);
+    if descent {
+        let mut rng = stream(options.seed, round, DESCENT + level, index);
+        return levels::merge(problem, parent(0), level, options, &mut rng, stop);
+    }
+    let mut rng = stream(options.seed, round, level, index);
     if level == 1 || parent_count == 0 {
         levels::level_one(problem, options, &mut rng, stop)
     } else {

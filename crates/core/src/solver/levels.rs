@@ -196,3 +196,69 @@ pub(crate) fn piece_from_mismatches<R: rand::Rng>(
     }
     cand.k += 1;
 }
+
+/// One descent exploration: `parent` (a dissection, or any candidate) with
+/// one piece fewer, by merging a piece (the smallest one half of the time,
+/// else a random one) into a neighbouring piece in every figure, then
+/// refined and scored at `level` (pieces − 1).
+pub(crate) fn merge<R: rand::Rng>(
+    problem: &Problem,
+    parent: &Candidate,
+    level: usize,
+    options: &Options,
+    rng: &mut R,
+    stop: &AtomicBool,
+) -> (Candidate, Score) {
+    let mut cand = parent.clone();
+    let k = cand.k;
+    if k < 2 {
+        return refine_and_score(problem, cand, level, options, rng, stop);
+    }
+    let f = rng.random_range(0..problem.shapes.len());
+    let shape = &problem.shapes[f];
+    let labels = &cand.labels[f];
+    let mut sizes = vec![0usize; k];
+    for &l in labels {
+        sizes[l as usize] += 1;
+    }
+    let b = if rng.random_bool(0.5) {
+        let least = sizes.iter().copied().filter(|&s| s > 0).min().unwrap_or(0);
+        let smallest: Vec<usize> = (0..k).filter(|&i| sizes[i] == least).collect();
+        smallest[rng.random_range(0..smallest.len())]
+    } else {
+        rng.random_range(0..k)
+    };
+    // A neighbour of piece b, chosen in proportion to the shared boundary.
+    let mut touching: Vec<u16> = Vec::new();
+    for c in 0..shape.len() as u32 {
+        if labels[c as usize] as usize != b {
+            continue;
+        }
+        for &n in shape.neighbors(c) {
+            let l = labels[n as usize];
+            if l as usize != b {
+                touching.push(l);
+            }
+        }
+    }
+    let a = if touching.is_empty() {
+        let mut a = rng.random_range(0..k - 1);
+        if a >= b {
+            a += 1;
+        }
+        a as u16
+    } else {
+        touching[rng.random_range(0..touching.len())]
+    };
+    let last = (k - 1) as u16;
+    for l in cand.labels.iter_mut().flatten() {
+        if *l as usize == b {
+            *l = a;
+        }
+        if *l == last {
+            *l = b as u16;
+        }
+    }
+    cand.k = k - 1;
+    refine_and_score(problem, cand, level, options, rng, stop)
+}

@@ -10,6 +10,7 @@
 pub(crate) mod candidate;
 mod explore;
 pub(crate) mod flood_fill;
+pub(crate) mod greedy;
 pub(crate) mod levels;
 pub(crate) mod refine;
 pub(crate) mod shape;
@@ -138,6 +139,48 @@ pub enum Event {
         /// Whether a valid dissection was found.
         found: bool,
     },
+    /// A round of the anytime search starts: the level schedule again, with
+    /// new random streams, looking for at most `max_pieces` pieces.
+    RoundStarted {
+        /// The round (0 is the paper's schedule).
+        round: usize,
+        /// The most pieces it looks for (one fewer than the best so far).
+        max_pieces: usize,
+    },
+    /// A valid dissection with fewer pieces than any before was found.
+    Improved {
+        /// Its piece count.
+        pieces: usize,
+        /// The level it was found at.
+        level: usize,
+        /// The round.
+        round: usize,
+        /// How it was found.
+        via: Via,
+    },
+}
+
+/// How an improvement was found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Via {
+    /// The constructive dissection.
+    Greedy,
+    /// An exploration of the level search.
+    Search,
+    /// A near miss of the level search, finished by the repairer.
+    Repair,
+}
+
+impl Via {
+    /// A short name: `greedy`, `search`, `repair`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Via::Greedy => "greedy",
+            Via::Search => "search",
+            Via::Repair => "repair",
+        }
+    }
 }
 
 /// Receives [`Event`]s (from worker threads).
@@ -188,6 +231,8 @@ pub struct Outcome {
     pub stopped: bool,
     /// Explorations run in all.
     pub explorations: usize,
+    /// Rounds of the level schedule run (the paper's schedule is one).
+    pub rounds: usize,
 }
 
 /// Occurs when figures cannot be dissected together.
@@ -234,18 +279,80 @@ pub fn check_figures(figures: &[Figure]) -> Result<(), SolveError> {
     Ok(())
 }
 
-/// The random stream of exploration `index` at `level`.
-fn stream(seed: u64, level: usize, index: usize) -> ChaCha8Rng {
+/// The random stream of exploration `index` at `level` of round `round`
+/// (round 0 is the paper's schedule and keeps its streams).
+fn stream(seed: u64, round: usize, level: usize, index: usize) -> ChaCha8Rng {
     fn splitmix(mut z: u64) -> u64 {
         z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
         z ^ (z >> 31)
     }
-    ChaCha8Rng::seed_from_u64(splitmix(
-        splitmix(seed) ^ ((level as u64) << 40) ^ index as u64,
-    ))
+    let mut key = splitmix(seed) ^ ((level as u64) << 40) ^ index as u64;
+    if round > 0 {
+        key = splitmix(key ^ splitmix(round as u64).rotate_left(17));
+    }
+    ChaCha8Rng::seed_from_u64(splitmix(key))
 }
+
+/// What one level of explorations produced.
+pub(crate) struct Level {
+    /// Every exploration's result, in index order.
+    pub(crate) results: Vec<(Candidate, Score)>,
+    /// Whether a stop cut the level short.
+    pub(crate) stopped: bool,
+}
+
+impl Level {
+    fn best_mismatch(&self) -> u64 {
+        self.results
+            .iter()
+            .map(|(_, s)| s.mismatch)
+            .min()
+            .unwrap_or(u64::MAX)
+    }
+
+    /// The valid result of least area variance (then objective, then index).
+    fn best_valid(&self) -> Option<&(Candidate, Score)> {
+        self.results.iter().filter(|(_, s)| s.valid).min_by(|a, b| {
+            a.1.variance
+                .total_cmp(&b.1.variance)
+                .then(a.1.value.total_cmp(&b.1.value))
+        })
+    }
+
+    /// The `keep` best results by objective (stable: ties keep index order).
+    fn kept(self, keep: usize) -> Vec<(Candidate, Score)> {
+        let results = self.results;
+        let mut order: Vec<usize> = (0..results.len()).collect();
+        order.sort_by(|&a, &b| {
+            results[a]
+                .1
+                .value
+                .total_cmp(&results[b].1.value)
+                .then(a.cmp(&b))
+        });
+        order.truncate(keep.max(1));
+        let mut slots: Vec<Option<(Candidate, Score)>> = results.into_iter().map(Some).collect();
+        order
+            .into_iter()
+            .map(|i| slots[i].take().expect("each index once"))
+            .collect()
+    }
+}
+
+/// Where the explorations of a level start from.
+#[derive(Clone, Copy)]
+enum From<'p> {
+    /// The paper's level: two clusters at level 1, else one more piece for
+    /// a random one of the kept candidates of the level below.
+    Below(&'p [(Candidate, Score)]),
+    /// The descent: one piece fewer than this dissection (merge).
+    Above(&'p Candidate),
+}
+
+/// Stream levels of the descent are kept apart from the ladder's.
+pub(crate) const DESCENT: usize = 1 << 20;
 
 /// The solver form of `figures` under `options`.
 fn problem_of(figures: &[Figure], options: &Options) -> Result<Problem, SolveError> {
@@ -262,7 +369,341 @@ fn problem_of(figures: &[Figure], options: &Options) -> Result<Problem, SolveErr
     ))
 }
 
-/// Finds a dissection of `figures` into as few connected pieces as it can.
+/// One search's fixed context.
+pub(crate) struct Search<'a> {
+    figures: &'a [Figure],
+    problem: Problem,
+    options: &'a Options,
+    stop: &'a AtomicBool,
+    observer: &'a dyn Observer,
+    pool: rayon::ThreadPool,
+    /// Runs the batches instead of `pool` when set.
+    executor: Option<&'a dyn Executor>,
+}
+
+impl<'a> Search<'a> {
+    pub(crate) fn new(
+        figures: &'a [Figure],
+        options: &'a Options,
+        stop: &'a AtomicBool,
+        observer: &'a dyn Observer,
+        executor: Option<&'a dyn Executor>,
+    ) -> Result<Search<'a>, SolveError> {
+        let problem = problem_of(figures, options)?;
+        if options.threads > MAX_THREADS {
+            return Err(SolveError::Threads(format!(
+                "{} threads asked for; at most {MAX_THREADS}",
+                options.threads
+            )));
+        }
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(options.threads)
+            .build()
+            .map_err(|e| SolveError::Threads(e.to_string()))?;
+        Ok(Search {
+            figures,
+            problem,
+            options,
+            stop,
+            observer,
+            pool,
+            executor,
+        })
+    }
+
+    fn stopped(&self) -> bool {
+        self.stop.load(Ordering::Relaxed)
+    }
+
+    fn found(&self, cand: &Candidate, score: &Score, level: usize) -> Found {
+        Found {
+            pieces: cand.cells_by_label(self.figures),
+            level,
+            variance: score.variance,
+        }
+    }
+
+    /// Level 0: the figures themselves, one piece each.
+    fn level_zero(&self) -> (Candidate, Score) {
+        self.observer.on_event(&Event::LevelStarted {
+            level: 0,
+            pieces: 1,
+            explorations: 1,
+        });
+        let mut whole = Candidate {
+            labels: self
+                .problem
+                .shapes
+                .iter()
+                .map(|s| vec![0u16; s.len()])
+                .collect(),
+            k: 1,
+        };
+        let s0 = whole.evaluate(&self.problem, 0.0, self.options.split_penalty);
+        self.observer.on_event(&Event::LevelFinished {
+            level: 0,
+            pieces: 1,
+            explorations: 1,
+            best_mismatch: s0.mismatch,
+            found: s0.valid,
+        });
+        (whole, s0)
+    }
+
+    /// The explorations of `level` in `round`, from `parents` (the kept
+    /// candidates of the level below; unused at level 1), in batches, with
+    /// the near-miss extra rounds.
+    fn level(&self, round: usize, level: usize, from: From<'_>) -> Result<Level, SolveError> {
+        let options = self.options;
+        let pieces = level + 1;
+        // The descent is a local step from a dissection: a quarter of a
+        // level's explorations, no extra rounds.
+        let (n, extra_rounds) = match from {
+            From::Below(_) => (options.explorations.max(1), options.extra_rounds),
+            From::Above(_) => (options.explorations.div_ceil(4).max(1), 0),
+        };
+        self.observer.on_event(&Event::LevelStarted {
+            level,
+            pieces,
+            explorations: n,
+        });
+        let done = AtomicUsize::new(0);
+        let total = AtomicUsize::new(n);
+        let best_seen = Mutex::new((f64::INFINITY, u64::MAX));
+        let note = |result: &(Candidate, Score)| {
+            let d = done.fetch_add(1, Ordering::Relaxed) + 1;
+            let (bs, bm) = {
+                let mut g = best_seen.lock().unwrap_or_else(|e| e.into_inner());
+                g.0 = g.0.min(result.1.value);
+                g.1 = g.1.min(result.1.mismatch);
+                *g
+            };
+            self.observer.on_event(&Event::Exploration {
+                level,
+                done: d,
+                total: total.load(Ordering::Relaxed),
+                best_score: bs,
+                best_mismatch: bm,
+            });
+        };
+        let run_one = |i: usize| -> (Candidate, Score) {
+            let result = match from {
+                From::Below(parents) => explore::explore_one(
+                    &self.problem,
+                    options,
+                    round,
+                    level,
+                    i,
+                    false,
+                    parents.len(),
+                    |p| &parents[p].0,
+                    self.stop,
+                ),
+                From::Above(parent) => explore::explore_one(
+                    &self.problem,
+                    options,
+                    round,
+                    level,
+                    i,
+                    true,
+                    1,
+                    |_| parent,
+                    self.stop,
+                ),
+            };
+            note(&result);
+            result
+        };
+        // What an executor gets as parents (made once per level, only for one).
+        let (parents, descent): (Vec<Exploration>, bool) = match (self.executor, from) {
+            (None, _) => (Vec::new(), false),
+            (Some(_), From::Below(parents)) => (
+                parents
+                    .iter()
+                    .map(|(candidate, score)| Exploration {
+                        candidate: candidate.clone(),
+                        score: *score,
+                    })
+                    .collect(),
+                false,
+            ),
+            // The descent's parent is a dissection; explorations read only
+            // a parent's labels, never its score.
+            (Some(_), From::Above(parent)) => (
+                vec![Exploration {
+                    candidate: parent.clone(),
+                    score: Score {
+                        value: 0.0,
+                        mismatch: 0,
+                        split: 0,
+                        valid: true,
+                        variance: 0.0,
+                    },
+                }],
+                true,
+            ),
+        };
+        let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(n);
+        let batch = options.batch.max(1);
+        let near_miss = options.near_miss(self.figures.len(), self.figures[0].len());
+        let mut start = 0;
+        let mut planned = n;
+        let mut stopped = false;
+        while start < planned {
+            let end = (start + batch).min(planned);
+            let chunk: Vec<(Candidate, Score)> = match self.executor {
+                None => self
+                    .pool
+                    .install(|| (start..end).into_par_iter().map(run_one).collect()),
+                Some(ex) => {
+                    let batch = Batch {
+                        round,
+                        level,
+                        descent,
+                        indices: start..end,
+                        parents: &parents,
+                    };
+                    let got = ex.run(&batch).map_err(ExplorationError::Executor)?;
+                    if got.len() != end - start {
+                        return Err(ExplorationError::Count {
+                            got: got.len(),
+                            want: end - start,
+                        }
+                        .into());
+                    }
+                    let mut chunk = Vec::with_capacity(got.len());
+                    for e in got {
+                        e.check(&self.problem)?;
+                        let result = (e.candidate, e.score);
+                        note(&result);
+                        chunk.push(result);
+                    }
+                    chunk
+                }
+            };
+            results.extend(chunk);
+            start = end;
+            if self.stopped() {
+                stopped = true;
+                break;
+            }
+            if !options.full_levels && results.iter().any(|(_, s)| s.valid) {
+                break;
+            }
+            // A level that ends a near miss gets more rounds of explorations
+            // (new streams, same parents) before the next level is tried.
+            let best_mismatch = results
+                .iter()
+                .map(|(_, s)| s.mismatch)
+                .min()
+                .unwrap_or(u64::MAX);
+            if start == planned
+                && planned < n.saturating_mul(1 + extra_rounds)
+                && best_mismatch <= near_miss
+            {
+                planned += n;
+                total.store(planned, Ordering::Relaxed);
+                self.observer.on_event(&Event::LevelStarted {
+                    level,
+                    pieces,
+                    explorations: planned,
+                });
+            }
+        }
+        let level_result = Level { results, stopped };
+        self.observer.on_event(&Event::LevelFinished {
+            level,
+            pieces,
+            explorations: level_result.results.len(),
+            best_mismatch: level_result.best_mismatch(),
+            found: level_result.results.iter().any(|(_, s)| s.valid),
+        });
+        Ok(level_result)
+    }
+
+    /// Hands the near misses of a level (smallest `E_M` first, at most
+    /// `tries`) to the repairer; the first valid repair with at most
+    /// `pieces` pieces wins.
+    pub(crate) fn repair(
+        &self,
+        repairer: &dyn Repair,
+        level: &Level,
+        pieces: usize,
+        tries: usize,
+    ) -> Option<(Candidate, Score)> {
+        let limit = 4 * self
+            .options
+            .near_miss(self.figures.len(), self.figures[0].len());
+        let mut order: Vec<usize> = (0..level.results.len())
+            .filter(|&i| {
+                let s = &level.results[i].1;
+                !s.valid && s.mismatch <= limit
+            })
+            .collect();
+        order.sort_by_key(|&i| (level.results[i].1.mismatch, level.results[i].1.split, i));
+        let mut seen: Vec<&Vec<Vec<u16>>> = Vec::new();
+        for i in order {
+            if seen.len() >= tries || self.stopped() {
+                break;
+            }
+            let cand = &level.results[i].0;
+            if seen.contains(&&cand.labels) {
+                continue;
+            }
+            seen.push(&cand.labels);
+            let cells = cand.cells_by_label(self.figures);
+            let Some(fixed) = repairer.repair(&cells, self.stop) else {
+                continue;
+            };
+            if let Some(c) = self.candidate_of(&fixed) {
+                if c.0.k <= pieces {
+                    return Some(c);
+                }
+            }
+        }
+        None
+    }
+
+    /// A candidate from cells per piece per figure, when they cover every
+    /// figure exactly and the solver's own score calls it valid.
+    fn candidate_of(&self, pieces: &[Vec<Vec<Cell>>]) -> Option<(Candidate, Score)> {
+        if pieces.len() != self.figures.len() {
+            return None;
+        }
+        let k = pieces[0].len();
+        if k == 0 || k >= u16::MAX as usize {
+            return None;
+        }
+        let mut labels = Vec::with_capacity(pieces.len());
+        for (fig, fp) in self.figures.iter().zip(pieces) {
+            if fp.len() != k {
+                return None;
+            }
+            let cells = fig.cells();
+            let mut l = vec![u16::MAX; cells.len()];
+            for (i, piece) in fp.iter().enumerate() {
+                for c in piece {
+                    let j = cells.binary_search(c).ok()?;
+                    if l[j] != u16::MAX {
+                        return None;
+                    }
+                    l[j] = i as u16;
+                }
+            }
+            if l.contains(&u16::MAX) {
+                return None;
+            }
+            labels.push(l);
+        }
+        let mut cand = Candidate { labels, k };
+        let score = cand.evaluate(&self.problem, 0.0, self.options.split_penalty);
+        score.valid.then_some((cand, score))
+    }
+}
+
+/// Finds a dissection of `figures` into as few connected pieces as it can,
+/// by the paper's schedule: levels of 2, 3, ... pieces, stopping at the
+/// first level that holds a valid dissection.
 ///
 /// Raising `stop` ends the search soon after; the best valid dissection found
 /// so far is returned.
@@ -285,232 +726,283 @@ pub fn solve_with(
     observer: &dyn Observer,
     executor: Option<&dyn Executor>,
 ) -> Result<Outcome, SolveError> {
-    let problem = problem_of(figures, options)?;
-    if options.threads > MAX_THREADS {
-        return Err(SolveError::Threads(format!(
-            "{} threads asked for; at most {MAX_THREADS}",
-            options.threads
-        )));
-    }
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(options.threads)
-        .build()
-        .map_err(|e| SolveError::Threads(e.to_string()))?;
-    let to_found = |cand: &Candidate, score: &Score, level: usize| -> Found {
-        let pieces = cand.cells_by_label(figures);
-        Found {
-            pieces,
-            level,
-            variance: score.variance,
-        }
-    };
-
-    // Level 0: are the figures already congruent?
-    observer.on_event(&Event::LevelStarted {
-        level: 0,
-        pieces: 1,
-        explorations: 1,
-    });
-    let mut whole = Candidate {
-        labels: problem.shapes.iter().map(|s| vec![0u16; s.len()]).collect(),
-        k: 1,
-    };
-    let s0 = whole.evaluate(&problem, 0.0, options.split_penalty);
-    observer.on_event(&Event::LevelFinished {
-        level: 0,
-        pieces: 1,
-        explorations: 1,
-        best_mismatch: s0.mismatch,
-        found: s0.valid,
-    });
+    let search = Search::new(figures, options, stop, observer, executor)?;
+    let (whole, s0) = search.level_zero();
     if s0.valid {
+        observer.on_event(&Event::Improved {
+            pieces: 1,
+            level: 0,
+            round: 0,
+            via: Via::Search,
+        });
         return Ok(Outcome {
-            found: Some(to_found(&whole, &s0, 0)),
+            found: Some(search.found(&whole, &s0, 0)),
             best_mismatch: Some(0),
             last_pieces: 1,
             stopped: false,
             explorations: 1,
+            rounds: 0,
         });
     }
-
     let cells = figures[0].len();
     let max_pieces = options.max_pieces.unwrap_or(cells).min(cells);
-    let mut best: Vec<(Candidate, Score)> = Vec::new();
-    let mut total_explorations = 0;
+    let mut parents: Vec<(Candidate, Score)> = Vec::new();
     let mut outcome = Outcome {
         found: None,
         best_mismatch: Some(s0.mismatch),
         last_pieces: 1,
         stopped: false,
         explorations: 1,
+        rounds: 1,
     };
     for level in 1.. {
         let pieces = level + 1;
-        if pieces > max_pieces || stop.load(Ordering::Relaxed) {
+        if pieces > max_pieces || search.stopped() {
             break;
         }
-        let n = options.explorations.max(1);
-        observer.on_event(&Event::LevelStarted {
-            level,
-            pieces,
-            explorations: n,
-        });
-        let done = AtomicUsize::new(0);
-        let total = AtomicUsize::new(n);
-        let best_seen = Mutex::new((f64::INFINITY, u64::MAX));
-        let note = |result: &(Candidate, Score)| {
-            let d = done.fetch_add(1, Ordering::Relaxed) + 1;
-            let (bs, bm) = {
-                let mut g = best_seen.lock().expect("progress lock");
-                g.0 = g.0.min(result.1.value);
-                g.1 = g.1.min(result.1.mismatch);
-                *g
-            };
-            observer.on_event(&Event::Exploration {
-                level,
-                done: d,
-                total: total.load(Ordering::Relaxed),
-                best_score: bs,
-                best_mismatch: bm,
-            });
-        };
-        let run_one = |i: usize| -> (Candidate, Score) {
-            let result = explore::explore_one(
-                &problem,
-                options,
-                0,
-                level,
-                i,
-                best.len(),
-                |p| &best[p].0,
-                stop,
-            );
-            note(&result);
-            result
-        };
-        // What a foreign executor gets as parents (made once per level).
-        let parents: Vec<Exploration> = match executor {
-            Some(_) => best
-                .iter()
-                .map(|(candidate, score)| Exploration {
-                    candidate: candidate.clone(),
-                    score: *score,
-                })
-                .collect(),
-            None => Vec::new(),
-        };
-        let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(n);
-        let batch = options.batch.max(1);
-        let near_miss = options.near_miss(figures.len(), cells);
-        let mut start = 0;
-        let mut planned = n;
-        while start < planned {
-            let end = (start + batch).min(planned);
-            let chunk: Vec<(Candidate, Score)> = match executor {
-                None => pool.install(|| (start..end).into_par_iter().map(run_one).collect()),
-                Some(ex) => {
-                    let batch = Batch {
-                        round: 0,
-                        level,
-                        indices: start..end,
-                        parents: &parents,
-                    };
-                    let got = ex.run(&batch).map_err(ExplorationError::Executor)?;
-                    if got.len() != end - start {
-                        return Err(ExplorationError::Count {
-                            got: got.len(),
-                            want: end - start,
-                        }
-                        .into());
-                    }
-                    let mut chunk = Vec::with_capacity(got.len());
-                    for e in got {
-                        e.check(&problem)?;
-                        let result = (e.candidate, e.score);
-                        note(&result);
-                        chunk.push(result);
-                    }
-                    chunk
-                }
-            };
-            results.extend(chunk);
-            start = end;
-            if stop.load(Ordering::Relaxed) {
-                outcome.stopped = true;
-                break;
-            }
-            if !options.full_levels && results.iter().any(|(_, s)| s.valid) {
-                break;
-            }
-            // A level that ends a near miss gets more rounds of explorations
-            // (new streams, same parents) before the next level is tried.
-            let best_mismatch = results
-                .iter()
-                .map(|(_, s)| s.mismatch)
-                .min()
-                .unwrap_or(u64::MAX);
-            if start == planned
-                && planned < n * (1 + options.extra_rounds)
-                && best_mismatch <= near_miss
-            {
-                planned += n;
-                total.store(planned, Ordering::Relaxed);
-                observer.on_event(&Event::LevelStarted {
-                    level,
-                    pieces,
-                    explorations: planned,
-                });
-            }
-        }
-        total_explorations += results.len();
-        let found = results.iter().any(|(_, s)| s.valid);
-        let best_mismatch = results
-            .iter()
-            .map(|(_, s)| s.mismatch)
-            .min()
-            .unwrap_or(u64::MAX);
-        observer.on_event(&Event::LevelFinished {
-            level,
-            pieces,
-            explorations: results.len(),
-            best_mismatch,
-            found,
-        });
+        let result = search.level(0, level, From::Below(&parents))?;
+        outcome.explorations += result.results.len();
         outcome.last_pieces = pieces;
-        outcome.best_mismatch = Some(best_mismatch);
-        outcome.explorations = total_explorations + 1;
-        if found {
-            let (cand, score) = results
-                .iter()
-                .filter(|(_, s)| s.valid)
-                .min_by(|a, b| {
-                    a.1.variance
-                        .total_cmp(&b.1.variance)
-                        .then(a.1.value.total_cmp(&b.1.value))
-                })
-                .expect("a valid result");
-            outcome.found = Some(to_found(cand, score, level));
+        outcome.best_mismatch = Some(result.best_mismatch());
+        outcome.stopped |= result.stopped;
+        if let Some((cand, score)) = result.best_valid() {
+            let found = search.found(cand, score, level);
+            observer.on_event(&Event::Improved {
+                pieces: found.piece_count(),
+                level,
+                round: 0,
+                via: Via::Search,
+            });
+            outcome.found = Some(found);
             return Ok(outcome);
         }
-        if outcome.stopped || results.is_empty() {
+        if result.stopped || result.results.is_empty() {
             break;
         }
-        // Keep the Nb best (stable: ties keep exploration order).
-        let mut order: Vec<usize> = (0..results.len()).collect();
-        order.sort_by(|&a, &b| {
-            results[a]
-                .1
-                .value
-                .total_cmp(&results[b].1.value)
-                .then(a.cmp(&b))
-        });
-        order.truncate(options.keep.max(1));
-        let mut slots: Vec<Option<(Candidate, Score)>> = results.into_iter().map(Some).collect();
-        best = order
-            .into_iter()
-            .map(|i| slots[i].take().expect("each index once"))
-            .collect();
+        parents = result.kept(options.keep);
     }
-    outcome.stopped |= stop.load(Ordering::Relaxed);
+    outcome.stopped |= search.stopped();
+    Ok(outcome)
+}
+
+/// Settings of [`solve_anytime`] beyond [`Options`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Anytime {
+    /// End after this many rounds in a row that found no fewer pieces
+    /// (`None`: only a stop, or having nothing left to try, ends the run).
+    pub idle_rounds: Option<usize>,
+    /// Near-miss candidates handed to the repairer per level.
+    pub repair_tries: usize,
+}
+
+impl Default for Anytime {
+    fn default() -> Anytime {
+        Anytime {
+            idle_rounds: Some(1),
+            repair_tries: 2,
+        }
+    }
+}
+
+/// Finishes near misses: given a candidate that is a few cells from a
+/// dissection, returns a valid dissection with at most as many pieces, or
+/// `None`. (The core cannot depend on the exact search; the engine plugs
+/// it in.)
+pub trait Repair: Sync {
+    /// `pieces[f][i]`: the cells of piece `i` in figure `f` of a candidate
+    /// whose pieces nearly match (labels aligned to figure 0). The answer
+    /// has the same shape. Raising `stop` should end the repair soon.
+    fn repair(&self, pieces: &[Vec<Vec<Cell>>], stop: &AtomicBool) -> Option<Vec<Vec<Vec<Cell>>>>;
+}
+
+/// The anytime search: a valid dissection first (the constructive greedy
+/// dissection, never fails), then rounds of the paper's level schedule with
+/// fresh random streams, each looking for fewer pieces than the best so
+/// far; near misses go to `repair`. Every improvement is reported as
+/// [`Event::Improved`]; the answer never has more pieces than an earlier
+/// one.
+///
+/// Without a stop the run ends after [`Anytime::idle_rounds`] rounds
+/// without improvement, or when two pieces are reached (one is impossible:
+/// the figures are not congruent), so it is the same for any thread count.
+pub fn solve_anytime(
+    figures: &[Figure],
+    options: &Options,
+    anytime: &Anytime,
+    stop: &AtomicBool,
+    observer: &dyn Observer,
+    repair: Option<&dyn Repair>,
+) -> Result<Outcome, SolveError> {
+    solve_anytime_with(figures, options, anytime, stop, observer, repair, None)
+}
+
+/// [`solve_anytime`], with the explorations run by `executor` (`None`: the
+/// solver's thread pool); the same answer when it returns what
+/// [`Explorer::explore`] returns.
+pub fn solve_anytime_with(
+    figures: &[Figure],
+    options: &Options,
+    anytime: &Anytime,
+    stop: &AtomicBool,
+    observer: &dyn Observer,
+    repair: Option<&dyn Repair>,
+    executor: Option<&dyn Executor>,
+) -> Result<Outcome, SolveError> {
+    let search = Search::new(figures, options, stop, observer, executor)?;
+    let (whole, s0) = search.level_zero();
+    if s0.valid {
+        let found = search.found(&whole, &s0, 0);
+        observer.on_event(&Event::Improved {
+            pieces: 1,
+            level: 0,
+            round: 0,
+            via: Via::Search,
+        });
+        return Ok(Outcome {
+            found: Some(found),
+            best_mismatch: Some(0),
+            last_pieces: 1,
+            stopped: false,
+            explorations: 1,
+            rounds: 0,
+        });
+    }
+    let cells = figures[0].len();
+    let max_pieces = options.max_pieces.unwrap_or(cells).min(cells);
+    let mut outcome = Outcome {
+        found: None,
+        best_mismatch: Some(s0.mismatch),
+        last_pieces: 1,
+        stopped: false,
+        explorations: 1,
+        rounds: 0,
+    };
+    // The incumbent: the best dissection so far (within the cap).
+    let mut best: Option<(Candidate, Score)> = None;
+    let improve = |best: &mut Option<(Candidate, Score)>,
+                   outcome: &mut Outcome,
+                   cand: Candidate,
+                   score: Score,
+                   level: usize,
+                   round: usize,
+                   via: Via|
+     -> bool {
+        let found = search.found(&cand, &score, level);
+        let pieces = found.piece_count();
+        if pieces > max_pieces || best.as_ref().is_some_and(|(b, _)| pieces >= b.k) {
+            return false;
+        }
+        // Labels that vanished are dropped, so `k` is the piece count.
+        let cand = search.candidate_of(&found.pieces).map_or(cand, |(c, _)| c);
+        observer.on_event(&Event::Improved {
+            pieces,
+            level,
+            round,
+            via,
+        });
+        outcome.found = Some(found);
+        *best = Some((cand, score));
+        true
+    };
+    // The constructive dissection: every figure as the pivot, two ways of
+    // keeping components; each one with fewer pieces is an improvement.
+    'styles: for divisor in [2, 1] {
+        for pivot in 0..figures.len() {
+            if search.stopped() {
+                break 'styles;
+            }
+            let mut cand = greedy::greedy(&search.problem, greedy::GreedyStyle { pivot, divisor });
+            let score = cand.evaluate(&search.problem, 0.0, options.split_penalty);
+            debug_assert!(score.valid, "the greedy dissection is valid");
+            if score.valid {
+                let level = cand.k - 1;
+                improve(&mut best, &mut outcome, cand, score, level, 0, Via::Greedy);
+            }
+        }
+    }
+    let mut idle = 0;
+    for round in 0.. {
+        let best_pieces = best.as_ref().map_or(usize::MAX, |(b, _)| b.k);
+        // Look for fewer pieces than the best so far (and no more than the
+        // cap); two pieces is the least there can be.
+        let target = best_pieces.saturating_sub(1).min(max_pieces);
+        if target < 2 || search.stopped() {
+            break;
+        }
+        if anytime.idle_rounds.is_some_and(|n| idle >= n) {
+            break;
+        }
+        observer.on_event(&Event::RoundStarted {
+            round,
+            max_pieces: target,
+        });
+        outcome.rounds = round + 1;
+        let mut improved = false;
+        // The descent: one piece fewer than the incumbent, by merging two
+        // of its pieces and refining, for as long as that works.
+        while let Some((parent, _)) = best.clone() {
+            let pieces = parent.k - 1;
+            if pieces < 2 || search.stopped() {
+                break;
+            }
+            let level = pieces - 1;
+            let result = search.level(round, level, From::Above(&parent))?;
+            outcome.explorations += result.results.len();
+            let mut step = result
+                .best_valid()
+                .cloned()
+                .map(|(c, s)| (c, s, Via::Search));
+            if step.is_none() && !result.stopped {
+                if let Some(r) = repair {
+                    step = search
+                        .repair(r, &result, pieces, anytime.repair_tries)
+                        .map(|(c, s)| (c, s, Via::Repair));
+                }
+            }
+            let Some((c, s, via)) = step else { break };
+            if !improve(&mut best, &mut outcome, c, s, level, round, via) {
+                break;
+            }
+            improved = true;
+        }
+        // The ladder: the paper's levels from two pieces up, with this
+        // round's streams, below the best so far.
+        let target = best
+            .as_ref()
+            .map_or(usize::MAX, |(b, _)| b.k)
+            .saturating_sub(1)
+            .min(max_pieces);
+        let mut parents: Vec<(Candidate, Score)> = Vec::new();
+        for level in 1..target {
+            if search.stopped() {
+                break;
+            }
+            let pieces = level + 1;
+            let result = search.level(round, level, From::Below(&parents))?;
+            outcome.explorations += result.results.len();
+            outcome.last_pieces = outcome.last_pieces.max(pieces);
+            outcome.best_mismatch = Some(result.best_mismatch());
+            if let Some((c, s)) = result.best_valid().cloned() {
+                improved |= improve(&mut best, &mut outcome, c, s, level, round, Via::Search);
+                break;
+            }
+            if result.stopped || result.results.is_empty() {
+                break;
+            }
+            if let Some(r) = repair {
+                if let Some((c, s)) = search.repair(r, &result, pieces, anytime.repair_tries) {
+                    improved |= improve(&mut best, &mut outcome, c, s, level, round, Via::Repair);
+                    break;
+                }
+            }
+            parents = result.kept(options.keep);
+        }
+        if improved {
+            idle = 0;
+        } else {
+            idle += 1;
+        }
+    }
+    outcome.stopped |= search.stopped();
     Ok(outcome)
 }

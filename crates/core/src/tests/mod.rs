@@ -2,6 +2,7 @@
 //! matching, flood fill, refinement and levels. Figures are ASCII strings
 //! (see [`util`]).
 
+mod anytime;
 mod distance;
 mod flood_fill;
 mod levels;

@@ -5,8 +5,8 @@
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use dissect_core::solver::{
-    solve, solve_with, Batch, Executor, Exploration, ExplorationError, Explorer, Options,
-    SolveError,
+    solve, solve_anytime, solve_anytime_with, solve_with, Anytime, Batch, Executor, Exploration,
+    ExplorationError, Explorer, Options, SolveError,
 };
 use dissect_core::Figure;
 
@@ -48,6 +48,7 @@ impl Executor for Remote {
                     .explore(
                         batch.round,
                         batch.level,
+                        batch.descent,
                         i,
                         &parents,
                         &AtomicBool::new(false),
@@ -68,6 +69,13 @@ fn same_as_local(figures: &[Figure], options: &Options) {
     };
     let spread = solve_with(figures, options, &stop, &(), Some(&remote)).expect("solvable");
     assert!(remote.batches.load(Ordering::Relaxed) > 0);
+    assert!(local.found.is_some());
+    assert_eq!(spread, local);
+    // The anytime schedule too: rounds, the descent, the ladder.
+    let anytime = Anytime::default();
+    let local = solve_anytime(figures, options, &anytime, &stop, &(), None).expect("solvable");
+    let spread = solve_anytime_with(figures, options, &anytime, &stop, &(), None, Some(&remote))
+        .expect("solvable");
     assert!(local.found.is_some());
     assert_eq!(spread, local);
 }
@@ -97,7 +105,7 @@ fn explorations_round_trip_and_bad_bytes_are_errors() {
     let figures = [fig(Square, "###|###"), fig(Square, "######")];
     let explorer = Explorer::new(&figures, &small(1)).expect("solvable");
     let e = explorer
-        .explore(0, 1, 0, &[], &AtomicBool::new(false))
+        .explore(0, 1, false, 0, &[], &AtomicBool::new(false))
         .expect("level 1 needs no parent");
     let bytes = e.to_bytes();
     assert_eq!(Exploration::from_bytes(&bytes), Ok(e.clone()));
@@ -120,7 +128,7 @@ fn explorations_round_trip_and_bad_bytes_are_errors() {
     let other =
         Explorer::new(&[fig(Square, "##|##"), fig(Square, "####")], &small(1)).expect("solvable");
     assert!(matches!(
-        other.explore(0, 2, 0, &[e], &AtomicBool::new(false)),
+        other.explore(0, 2, false, 0, &[e], &AtomicBool::new(false)),
         Err(ExplorationError::Mismatch(_))
     ));
 }

@@ -1,5 +1,6 @@
 //! The topics of the integration suite.
 
+mod anytime;
 mod ascii_art;
 mod explore;
 mod lattice;

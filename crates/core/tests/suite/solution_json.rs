@@ -118,10 +118,15 @@ fn errors() {
         ),
         Err(SolutionError::UnknownLattice("hexagonal".into()))
     );
+    // Every text here is one line: the bad cell's `[` is found by its text.
     let bad_cell = |text: &str, figure, piece, cell: Vec<i64>, lattice| {
+        let written = format!("{cell:?}").replace(' ', "");
+        let column = text.find(&written).expect("the cell is in the text") + 1;
         assert_eq!(
             parse_solution(text),
             Err(SolutionError::BadCell {
+                line: 1,
+                column,
                 figure,
                 piece,
                 cell,
@@ -157,6 +162,24 @@ fn errors() {
         0,
         vec![0, 3_000_000_000],
         Square,
+    );
+    bad_cell(
+        r#"{"lattice": "hex", "figures": [{"pieces": [[[0,0], [1,0,0]]]}]}"#,
+        0,
+        0,
+        vec![1, 0, 0],
+        LatticeKind::Hex,
+    );
+}
+
+/// A bad cell's error names its line and column, and the lattice's cell form.
+#[test]
+fn a_bad_cell_is_located_on_its_line() {
+    let text = "{\n  \"lattice\": \"tri4\",\n  \"figures\": [\n    {\"pieces\": [[[0, 0, 1],\n      [2, 0, 7]]]}\n  ]\n}\n";
+    let e = parse_solution(text).expect_err("t = 7 is not a tri4 triangle");
+    assert_eq!(
+        e.to_string(),
+        "line 5, column 7: figure 0 piece 0: bad cell [2, 0, 7] for the tri4 lattice (a tri4 cell is [x, y, t] with t in 0..=3)"
     );
 }
 

@@ -222,10 +222,16 @@ fn explorations_are_reported() {
             ..
         })
     ));
+    // The level that found it is the last level event; the improvement it
+    // made is the last event.
     assert!(matches!(
-        events.last(),
+        events
+            .iter()
+            .rev()
+            .find(|e| matches!(e, Event::LevelFinished { .. })),
         Some(Event::LevelFinished { found: true, .. })
     ));
+    assert!(matches!(events.last(), Some(Event::Improved { .. })));
 }
 
 #[test]

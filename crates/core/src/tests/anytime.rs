@@ -1,0 +1,148 @@
+//! The constructive dissection and the repair hook of the anytime search.
+
+use std::sync::atomic::AtomicBool;
+use std::sync::Mutex;
+
+use crate::lattice::{Cell, LatticeKind};
+use crate::solver::candidate::{Candidate, Score};
+use crate::solver::greedy::{greedy, GreedyStyle};
+use crate::solver::{Level, Options, Repair, Search};
+use crate::tests::util::{candidate, cells_by_label, verified};
+
+/// Every style of the constructive dissection is valid, on every lattice,
+/// with two and three figures, whatever the pivot.
+#[test]
+fn the_constructive_dissection_is_always_valid() {
+    use LatticeKind::*;
+    let cases: &[(LatticeKind, &[&str])] = &[
+        (Square, &["AAAA|AAAA|AAAA|AAAA", "AAAAAAAA|AAAAAAAA"]),
+        (Square, &["AAA.|AAAA|AAAA|.AAA", "AAAAAAA|AAAAAAA"]),
+        (
+            Square,
+            &["AAAAAA|AAAAAA", "AAAA|AAAA|AAAA", "AAA|AAA|AAA|AAA"],
+        ),
+        (Tri4, &["AAAA AAAA|AAAA AAAA", "AAAA AAAA AAAA AAAA"]),
+        (Tri4, &["AA.. AAAA|AAAA A..A", "AAAA AAAA AA.. ..AA"]),
+        (Cubic, &["AA|AA/AA|AA", "AAAA|AAAA"]),
+        (
+            Cubic,
+            &[
+                "AAA|AAA|AAA/AAA|AAA|AAA/AAA|AAA|AAA",
+                "AAAAAAAAA|AAAAAAAAA|AAAAAAAAA",
+            ],
+        ),
+    ];
+    for (lattice, figures) in cases {
+        let (figs, problem, _) = candidate(*lattice, true, figures);
+        for pivot in 0..figs.len() {
+            for divisor in [1, 2] {
+                let cand = greedy(&problem, GreedyStyle { pivot, divisor });
+                assert!(
+                    verified(*lattice, true, &figs, &cand),
+                    "{lattice} {figures:?} pivot {pivot} divisor {divisor}: {:?}",
+                    cells_by_label(&figs, &cand)
+                );
+            }
+        }
+    }
+}
+
+/// Congruent figures come out as one piece; a square and a bar of the same
+/// cells as few pieces (the common part first).
+#[test]
+fn the_constructive_dissection_keeps_common_parts_whole() {
+    let (figs, problem, _) = candidate(LatticeKind::Square, true, &["AAA|AAA", "AA|AA|AA"]);
+    let cand = greedy(
+        &problem,
+        GreedyStyle {
+            pivot: 0,
+            divisor: 1,
+        },
+    );
+    assert_eq!(cand.k, 1);
+    assert!(verified(LatticeKind::Square, true, &figs, &cand));
+    let (figs, problem, _) = candidate(
+        LatticeKind::Square,
+        true,
+        &["AAAA|AAAA|AAAA|AAAA", "AAAAAAAA|AAAAAAAA"],
+    );
+    let cand = greedy(
+        &problem,
+        GreedyStyle {
+            pivot: 0,
+            divisor: 1,
+        },
+    );
+    assert_eq!(cand.k, 2, "two 4×2 halves");
+    assert!(verified(LatticeKind::Square, true, &figs, &cand));
+}
+
+/// Checks what the repairer is handed and returns a fixed answer.
+struct Oracle {
+    answer: Vec<Vec<Vec<Cell>>>,
+    handed: Mutex<Vec<Vec<Vec<Vec<Cell>>>>>,
+}
+
+impl Repair for Oracle {
+    fn repair(&self, pieces: &[Vec<Vec<Cell>>], _stop: &AtomicBool) -> Option<Vec<Vec<Vec<Cell>>>> {
+        self.handed.lock().unwrap().push(pieces.to_vec());
+        Some(self.answer.clone())
+    }
+}
+
+fn search_of<'a>(
+    figures: &'a [crate::Figure],
+    options: &'a Options,
+    stop: &'a AtomicBool,
+) -> Search<'a> {
+    Search::new(figures, options, stop, &(), None).expect("valid figures")
+}
+
+/// A near miss (one cell of the 2×3 rectangle in the wrong piece) goes to
+/// the repairer as cells per piece per figure; a valid answer with as many
+/// pieces comes back as a valid candidate, an invalid one is refused.
+#[test]
+fn a_near_miss_goes_to_the_repairer_and_a_valid_answer_comes_back() {
+    // 2×3 rectangle vs 1×6 bar: two 1×3 bars. The candidate's rectangle has
+    // one cell of B in A's row.
+    let (figs, problem, mut near) = candidate(LatticeKind::Square, true, &["AAB|BBB", "AAABBB"]);
+    let score = near.evaluate(&problem, 0.0, 1000.0);
+    assert!(!score.valid && score.mismatch > 0, "{score:?}");
+    let (_, _, fixed) = candidate(LatticeKind::Square, true, &["AAA|BBB", "AAABBB"]);
+    let answer = cells_by_label(&figs, &fixed);
+    let oracle = Oracle {
+        answer: answer.clone(),
+        handed: Mutex::new(Vec::new()),
+    };
+    let options = Options::default();
+    let stop = AtomicBool::new(false);
+    let search = search_of(&figs, &options, &stop);
+    let level = Level {
+        results: vec![(near.clone(), score)],
+        stopped: false,
+    };
+    let (cand, s): (Candidate, Score) = search.repair(&oracle, &level, 2, 2).expect("repaired");
+    assert!(s.valid);
+    assert!(verified(LatticeKind::Square, true, &figs, &cand));
+    let handed = oracle.handed.lock().unwrap();
+    assert_eq!(handed.len(), 1);
+    assert_eq!(
+        handed[0],
+        cells_by_label(&figs, &near),
+        "the candidate's cells"
+    );
+    drop(handed);
+
+    // More pieces than allowed, or cells that do not tile: refused.
+    assert!(
+        search.repair(&oracle, &level, 1, 2).is_none(),
+        "3 > 1 piece cap"
+    );
+    let mut broken = answer.clone();
+    broken[1][0].pop();
+    let liar = Oracle {
+        answer: broken,
+        handed: Mutex::new(Vec::new()),
+    };
+    assert!(search.repair(&liar, &level, 2, 2).is_none(), "not a tiling");
+}

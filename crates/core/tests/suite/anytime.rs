@@ -1,0 +1,192 @@
+//! The anytime search: a valid dissection at once for any accepted input,
+//! improvements that only ever lower the piece count, a work rule that
+//! makes the answer independent of the thread count, and the repair hook.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Mutex;
+
+use dissect_core::solver::{
+    solve_anytime, Anytime, Event, Observer, Options, Outcome, Repair, Via,
+};
+use dissect_core::verify::verify_pieces;
+use dissect_core::{Figure, LatticeKind};
+
+use super::util::{fig, Cubic, Square, Tri4};
+
+fn small(seed: u64, threads: usize) -> Options {
+    Options {
+        seed,
+        threads,
+        explorations: 24,
+        keep: 8,
+        iterations: 20,
+        batch: 8,
+        ..Options::default()
+    }
+}
+
+/// Records every improvement.
+#[derive(Default)]
+struct Improvements(Mutex<Vec<(usize, Via)>>);
+
+impl Observer for Improvements {
+    fn on_event(&self, event: &Event) {
+        if let Event::Improved { pieces, via, .. } = event {
+            self.0.lock().unwrap().push((*pieces, *via));
+        }
+    }
+}
+
+fn anytime(
+    figures: &[Figure],
+    options: &Options,
+    settings: &Anytime,
+    repair: Option<&dyn Repair>,
+) -> (Outcome, Vec<(usize, Via)>) {
+    let seen = Improvements::default();
+    let outcome = solve_anytime(
+        figures,
+        options,
+        settings,
+        &AtomicBool::new(false),
+        &seen,
+        repair,
+    )
+    .expect("solvable input");
+    let list = seen.0.into_inner().unwrap();
+    (outcome, list)
+}
+
+fn verified(lattice: LatticeKind, figures: &[Figure], outcome: &Outcome) -> usize {
+    let found = outcome.found.as_ref().expect("a dissection");
+    verify_pieces(lattice, true, figures, &found.pieces)
+        .unwrap_or_else(|v| panic!("invalid dissection: {}", v[0]))
+}
+
+/// Four figures of 27 cubes (a 3×3×3 cube, a 9×3 slab, a step and a
+/// 3×3×3 cube with one cube moved on top): the constructive step alone (no rounds)
+/// already dissects them.
+#[test]
+fn four_cubic_figures_of_27_get_a_dissection_without_any_round() {
+    let figures = [
+        fig(Cubic, "###|###|###/###|###|###/###|###|###"),
+        fig(Cubic, "#########|#########|#########"),
+        fig(Cubic, "######|######|######/###...|###...|###..."),
+        fig(Cubic, "###|###|###/###|###|###/###|###|##./#..|...|..."),
+    ];
+    assert!(figures.iter().all(|f| f.len() == 27), "27 cubes each");
+    let settings = Anytime {
+        idle_rounds: Some(0),
+        ..Anytime::default()
+    };
+    let (outcome, improvements) = anytime(&figures, &small(1, 1), &settings, None);
+    let n = verified(LatticeKind::Cubic, &figures, &outcome);
+    assert_eq!(outcome.rounds, 0, "no round ran");
+    assert_eq!(improvements.last().map(|i| i.0), Some(n));
+    assert!(improvements.iter().all(|i| i.1 == Via::Greedy));
+}
+
+/// On every lattice, with two and three figures: each improvement has fewer
+/// pieces than the one before, and the answer is the last one.
+#[test]
+fn improvements_only_ever_lower_the_piece_count() {
+    let cases: Vec<(LatticeKind, Vec<Figure>)> = vec![
+        (
+            Square,
+            vec![
+                fig(Square, "###.|####|####|.###"),
+                fig(Square, "####|####|####|##.."),
+            ],
+        ),
+        (
+            Square,
+            vec![
+                fig(Square, "######|######"),
+                fig(Square, "####|####|####"),
+                fig(Square, "###|###|###|###"),
+            ],
+        ),
+        (Tri4, vec![fig(Tri4, "FF|FF"), fig(Tri4, "FFFF")]),
+        (
+            Cubic,
+            vec![fig(Cubic, "##|##/##|##"), fig(Cubic, "####|####")],
+        ),
+    ];
+    for (lattice, figures) in cases {
+        let (outcome, improvements) = anytime(&figures, &small(3, 2), &Anytime::default(), None);
+        let n = verified(lattice, &figures, &outcome);
+        assert!(!improvements.is_empty(), "{lattice}: no improvement event");
+        for w in improvements.windows(2) {
+            assert!(
+                w[1].0 < w[0].0,
+                "{lattice}: {improvements:?} not decreasing"
+            );
+        }
+        assert_eq!(improvements.last().unwrap().0, n, "{lattice}");
+    }
+}
+
+/// Without a stop the run ends by its work rule, and the same seed gives
+/// the same dissection on 1 and 2 threads.
+#[test]
+fn same_seed_same_answer_on_1_and_2_threads() {
+    // A 5×5 square and a 4×4 beside a 3×3 (touching at a corner cell).
+    let figures = [
+        fig(Square, "#####|#####|#####|#####|#####"),
+        fig(Square, "####...|####...|####...|#######|....###|....###"),
+    ];
+    assert_eq!(figures[0].len(), figures[1].len());
+    for seed in [2, 9] {
+        let one = anytime(&figures, &small(seed, 1), &Anytime::default(), None);
+        let two = anytime(&figures, &small(seed, 2), &Anytime::default(), None);
+        verified(LatticeKind::Square, &figures, &one.0);
+        assert_eq!(one.0.found, two.0.found, "seed {seed}");
+        assert_eq!(one.1, two.1, "seed {seed}: improvements differ");
+    }
+}
+
+/// A stop at any moment still leaves the best dissection found so far (or
+/// none, when stopped before the first).
+#[test]
+fn a_stop_at_any_moment_keeps_a_valid_dissection() {
+    let figures = [
+        fig(Square, "#########|#########|#########|#########"),
+        fig(Square, "######|######|######|######|######|######"),
+    ];
+    /// Raises the stop flag at the `n`th event.
+    struct StopAt {
+        n: usize,
+        seen: Mutex<usize>,
+        stop: AtomicBool,
+    }
+    impl Observer for StopAt {
+        fn on_event(&self, _event: &Event) {
+            let mut s = self.seen.lock().unwrap();
+            *s += 1;
+            if *s >= self.n {
+                self.stop.store(true, Ordering::SeqCst);
+            }
+        }
+    }
+    for n in [1, 2, 3, 5, 20, 100] {
+        let obs = StopAt {
+            n,
+            seen: Mutex::new(0),
+            stop: AtomicBool::new(false),
+        };
+        let outcome = solve_anytime(
+            &figures,
+            &small(5, 2),
+            &Anytime::default(),
+            &obs.stop,
+            &obs,
+            None,
+        )
+        .expect("solvable");
+        if outcome.found.is_some() {
+            verified(LatticeKind::Square, &figures, &outcome);
+        } else {
+            assert!(outcome.stopped, "stopped at event {n} with no answer");
+        }
+    }
+}

@@ -1,0 +1,29 @@
+//! The engine of `dissect`: one run, the same for every front end (CLI, web
+//! studio, bench, Python).
+//!
+//! * [`RunOptions`]: every solver setting, validated once
+//!   ([`RunOptions::new`] from a plain [`RunConfig`], [`OptionsError`]).
+//! * [`run`]: the time limit and the stop flag (the only deadline of the
+//!   workspace), the anytime heuristic ([`dissect_core::solver::solve_anytime`])
+//!   and the exact lower-bound search ([`dissect_exact::search`]) side by
+//!   side with shared bounds, ending as soon as the best dissection meets
+//!   the lower bound (`optimal`), the repair of near misses, and the
+//!   [`Report`].
+//! * [`Verified`]: a dissection that passed [`dissect_core::verify`]; the
+//!   only kind of dissection a [`Report`] holds.
+//! * [`EngineObserver`]: live events (level progress, improvements, bounds).
+//!
+//! Architecture invariant: like the core, this crate does no I/O and never
+//! prints.
+
+mod options;
+mod repair;
+mod report;
+mod run;
+mod verified;
+
+pub use options::{OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS};
+pub use repair::ExactRepair;
+pub use report::{End, Improvement, LowerBound, Report, Source};
+pub use run::{run, run_with, EngineError, EngineEvent, EngineObserver};
+pub use verified::Verified;

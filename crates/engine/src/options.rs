@@ -1,0 +1,245 @@
+//! Run options: what a front end asks for ([`RunConfig`], plain fields) and
+//! the same checked once ([`RunOptions`]); every rule on solver settings
+//! lives here.
+
+use std::time::Duration;
+
+use dissect_core::solver::{Anytime, Options, MAX_THREADS};
+
+/// The most explorations per level (bounds the memory a level holds).
+pub const MAX_EXPLORATIONS: usize = 1_000_000;
+/// The most candidates kept, refinement iterations, split tries and idle
+/// rounds.
+const MAX_COUNT: usize = 1_000_000;
+
+/// Which searches a run uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Strategy {
+    /// A dissection at once (constructive), then rounds of the level search
+    /// for fewer pieces, near misses repaired; with the exact search beside
+    /// it when proving.
+    Anytime,
+    /// Exactly the paper's schedule: levels of 2, 3, ... pieces, ending at
+    /// the first level with a valid dissection (with the exact search beside
+    /// it when proving).
+    Paper,
+    /// The SAT search alone, for a minimum dissection.
+    Exact,
+}
+
+/// The settings of a run as a front end gives them; [`RunOptions::new`]
+/// checks them. `Default` is `dissect solve` with no flag.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunConfig {
+    /// Which searches run.
+    pub strategy: Strategy,
+    /// Run the exact lower-bound search beside the heuristic.
+    pub prove: bool,
+    /// Finish near misses by the exact local repair.
+    pub repair: bool,
+    /// Whether 2D pieces may be turned over.
+    pub mirror: bool,
+    /// The seed.
+    pub seed: u64,
+    /// Heuristic worker threads (0: one per core).
+    pub threads: usize,
+    /// Stop after this many seconds (`None`: the run ends by its work rule).
+    pub time_limit: Option<f64>,
+    /// Never report more pieces than this.
+    pub max_pieces: Option<usize>,
+    /// `λ` at level 1.
+    pub area_weight: f64,
+    /// Explorations per level, `N`.
+    pub explorations: usize,
+    /// Candidates kept per level, `Nb`.
+    pub keep: usize,
+    /// Refinement iterations, `R`.
+    pub iterations: usize,
+    /// Objective penalty per disconnected piece.
+    pub split_penalty: f64,
+    /// Level-1 runs tried when splitting a pair.
+    pub split_tries: usize,
+    /// Run the whole final level.
+    pub full_level: bool,
+    /// Extra rounds for a level ending a near miss.
+    pub extra_rounds: usize,
+    /// Refinement patience (0: the paper's loop).
+    pub patience: usize,
+    /// Without a time limit, end after this many rounds in a row without
+    /// fewer pieces.
+    pub idle_rounds: usize,
+}
+
+impl Default for RunConfig {
+    fn default() -> RunConfig {
+        let o = Options::default();
+        RunConfig {
+            strategy: Strategy::Anytime,
+            prove: true,
+            repair: true,
+            mirror: o.mirror,
+            seed: o.seed,
+            threads: o.threads,
+            time_limit: None,
+            max_pieces: None,
+            area_weight: o.area_weight,
+            explorations: o.explorations,
+            keep: o.keep,
+            iterations: o.iterations,
+            split_penalty: o.split_penalty,
+            split_tries: o.split_tries,
+            full_level: o.full_levels,
+            extra_rounds: o.extra_rounds,
+            patience: o.patience,
+            idle_rounds: Anytime::default().idle_rounds.unwrap_or(2),
+        }
+    }
+}
+
+/// Occurs when a run setting is out of range; the message names the
+/// setting as the command line spells it.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum OptionsError {
+    /// A count outside its range.
+    #[error("--{name} must be from {min} to {max}, got {value}")]
+    Count {
+        /// The setting.
+        name: &'static str,
+        /// Its value.
+        value: usize,
+        /// The least allowed.
+        min: usize,
+        /// The most allowed.
+        max: usize,
+    },
+    /// A number that must be finite (and maybe non-negative) is not.
+    #[error("--{name} must be a finite number{}, got {value}", if *.non_negative { " >= 0" } else { "" })]
+    Number {
+        /// The setting.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// Whether it must also be >= 0.
+        non_negative: bool,
+    },
+    /// The time limit is negative or not a number.
+    #[error("--time-limit must be a number of seconds >= 0, got {0}")]
+    TimeLimit(f64),
+}
+
+/// Checked run settings (built only by [`RunOptions::new`]).
+///
+/// # Validity
+/// Every count is in its range, `area_weight` is finite and >= 0,
+/// `split_penalty` is finite, the time limit is >= 0 (infinite: none).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunOptions {
+    config: RunConfig,
+    time_limit: Option<Duration>,
+}
+
+fn count(name: &'static str, value: usize, min: usize, max: usize) -> Result<(), OptionsError> {
+    if value < min || value > max {
+        return Err(OptionsError::Count {
+            name,
+            value,
+            min,
+            max,
+        });
+    }
+    Ok(())
+}
+
+impl RunOptions {
+    /// Checks `config`.
+    pub fn new(config: RunConfig) -> Result<RunOptions, OptionsError> {
+        count("explorations", config.explorations, 1, MAX_EXPLORATIONS)?;
+        count("keep", config.keep, 1, MAX_COUNT)?;
+        count("iterations", config.iterations, 0, MAX_COUNT)?;
+        count("split-tries", config.split_tries, 1, MAX_COUNT)?;
+        count("extra-rounds", config.extra_rounds, 0, MAX_COUNT)?;
+        count("patience", config.patience, 0, MAX_COUNT)?;
+        count("rounds", config.idle_rounds, 0, MAX_COUNT)?;
+        count("threads", config.threads, 0, MAX_THREADS)?;
+        if let Some(k) = config.max_pieces {
+            count("max-pieces", k, 1, usize::MAX)?;
+        }
+        if !(config.area_weight.is_finite() && config.area_weight >= 0.0) {
+            return Err(OptionsError::Number {
+                name: "area-weight",
+                value: config.area_weight,
+                non_negative: true,
+            });
+        }
+        if !config.split_penalty.is_finite() {
+            return Err(OptionsError::Number {
+                name: "split-penalty",
+                value: config.split_penalty,
+                non_negative: false,
+            });
+        }
+        let time_limit = match config.time_limit {
+            None => None,
+            Some(t) if t.is_nan() || t < 0.0 => return Err(OptionsError::TimeLimit(t)),
+            // A limit too far away to be a duration is no limit.
+            Some(t) => Duration::try_from_secs_f64(t).ok(),
+        };
+        Ok(RunOptions { config, time_limit })
+    }
+
+    /// The settings as given.
+    pub fn config(&self) -> &RunConfig {
+        &self.config
+    }
+
+    /// The time limit (`None`: the run ends by its work rule).
+    pub fn time_limit(&self) -> Option<Duration> {
+        self.time_limit
+    }
+
+    /// The seed.
+    pub fn seed(&self) -> u64 {
+        self.config.seed
+    }
+
+    /// The strategy.
+    pub fn strategy(&self) -> Strategy {
+        self.config.strategy
+    }
+
+    /// The heuristic solver's settings.
+    pub fn solver_options(&self) -> Options {
+        let c = &self.config;
+        Options {
+            mirror: c.mirror,
+            seed: c.seed,
+            threads: c.threads,
+            max_pieces: c.max_pieces,
+            area_weight: c.area_weight,
+            explorations: c.explorations,
+            keep: c.keep,
+            iterations: c.iterations,
+            split_penalty: c.split_penalty,
+            split_tries: c.split_tries,
+            full_levels: c.full_level,
+            extra_rounds: c.extra_rounds,
+            patience: c.patience,
+            ..Options::default()
+        }
+    }
+
+    /// The anytime schedule's settings: without a time limit the run ends
+    /// after `idle_rounds` rounds without improvement; with one, only the
+    /// limit (or optimality) ends it.
+    pub fn anytime(&self) -> Anytime {
+        Anytime {
+            idle_rounds: match self.time_limit {
+                None => Some(self.config.idle_rounds),
+                Some(_) => None,
+            },
+            ..Anytime::default()
+        }
+    }
+}

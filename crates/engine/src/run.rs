@@ -1,0 +1,475 @@
+//! One run: the heuristic and the exact search side by side, the deadline,
+//! the stop flag, and the report.
+
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::mpsc::{channel, Sender};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use dissect_core::solver::{
+    solve_anytime_with, solve_with, Event, Executor, Observer, Outcome, Repair, SolveError, Via,
+};
+use dissect_core::Figure;
+use dissect_exact::{
+    search, Bound, ExactError, ExactEvent, ExactObserver, ExactOptions, ExactOutcome, Mode, Reason,
+    RepairOptions,
+};
+
+use crate::options::{RunOptions, Strategy};
+use crate::report::{End, Improvement, LowerBound, Report, Source};
+use crate::verified::Verified;
+
+/// The exact search runs beside the heuristic only on figures of at most
+/// this many cells: its encoding grows with cells × placements, and larger
+/// figures would spend memory and a core on a formula it cannot solve.
+pub const PROVE_MAX_CELLS: usize = 600;
+
+/// SAT conflicts the exact side may spend in a run without a time limit.
+pub const EXACT_BUDGET: u64 = 100_000;
+
+/// The largest SAT encoding the exact side may build (bytes).
+const EXACT_MAX_BYTES: u64 = 256 << 20;
+
+/// How long a stopped run waits for the exact side to return.
+const EXACT_GRACE: Duration = Duration::from_millis(300);
+
+/// SAT conflicts one repair of a near miss may spend (deterministic work).
+pub const REPAIR_BUDGET: u64 = 4_000;
+
+/// Live news of a run.
+#[derive(Debug)]
+#[non_exhaustive]
+pub enum EngineEvent<'a> {
+    /// Progress of the level search.
+    Search(&'a Event),
+    /// Progress of the exact search.
+    Exact(&'a ExactEvent),
+    /// A dissection with fewer pieces than any before.
+    Improved(Improvement),
+    /// The lower bound rose.
+    LowerBound(&'a LowerBound),
+}
+
+/// Receives [`EngineEvent`]s (from worker threads).
+pub trait EngineObserver: Sync {
+    /// Called for every event.
+    fn on_event(&self, event: &EngineEvent<'_>);
+}
+
+impl EngineObserver for () {
+    fn on_event(&self, _event: &EngineEvent<'_>) {}
+}
+
+/// Occurs when a run cannot be done.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum EngineError {
+    /// The figures are not a dissection problem (fewer than two, mixed
+    /// lattices, unequal areas, too large), or threads cannot start.
+    #[error(transparent)]
+    Figures(#[from] SolveError),
+    /// The exact search failed.
+    #[error(transparent)]
+    Exact(#[from] ExactError),
+    /// A search produced a dissection the verifier rejects (a bug).
+    #[error("internal error: the {0} dissection failed verification: {1}")]
+    Unverified(&'static str, String),
+}
+
+/// What both sides share while the run lasts.
+struct Shared<'a> {
+    start: Instant,
+    names: &'a [String],
+    observer: &'a dyn EngineObserver,
+    /// The best piece count of each side (`usize::MAX`: none yet).
+    heuristic_best: AtomicUsize,
+    sat_best: AtomicUsize,
+    /// The best piece count known to either side, for the exact search.
+    upper: Arc<AtomicUsize>,
+    lower: Mutex<LowerBound>,
+    lower_value: AtomicUsize,
+    history: Mutex<Vec<Improvement>>,
+}
+
+impl Shared<'_> {
+    fn seconds(&self) -> f64 {
+        self.start.elapsed().as_secs_f64()
+    }
+
+    /// Notes a dissection of `pieces` pieces; an improvement when it has
+    /// fewer than any before.
+    fn found(&self, pieces: usize, source: Source) {
+        let side = match source {
+            Source::Sat => &self.sat_best,
+            _ => &self.heuristic_best,
+        };
+        side.fetch_min(pieces, Ordering::SeqCst);
+        self.upper.fetch_min(pieces, Ordering::SeqCst);
+        let improvement = {
+            let mut h = self.history.lock().unwrap_or_else(|e| e.into_inner());
+            if h.last().is_some_and(|l| l.pieces <= pieces) {
+                return;
+            }
+            let i = Improvement {
+                pieces,
+                seconds: self.seconds(),
+                source,
+            };
+            h.push(i);
+            i
+        };
+        self.observer.on_event(&EngineEvent::Improved(improvement));
+    }
+
+    fn raise_lower(&self, value: usize, reason: impl FnOnce() -> (String, String)) {
+        let bound = {
+            let mut l = self.lower.lock().unwrap_or_else(|e| e.into_inner());
+            if value <= l.value {
+                return;
+            }
+            let (reason, proof) = reason();
+            *l = LowerBound {
+                value,
+                reason,
+                proof,
+            };
+            self.lower_value.store(value, Ordering::SeqCst);
+            l.clone()
+        };
+        self.observer.on_event(&EngineEvent::LowerBound(&bound));
+    }
+}
+
+impl Observer for Shared<'_> {
+    fn on_event(&self, event: &Event) {
+        match event {
+            Event::LevelFinished {
+                level: 0,
+                found: false,
+                ..
+            } => self.raise_lower(2, || {
+                let r = "the figures are not congruent".to_string();
+                (r.clone(), r)
+            }),
+            Event::Improved { pieces, via, .. } => self.found(
+                *pieces,
+                match via {
+                    Via::Greedy => Source::Greedy,
+                    Via::Repair => Source::Repair,
+                    _ => Source::Search,
+                },
+            ),
+            _ => {}
+        }
+        self.observer.on_event(&EngineEvent::Search(event));
+    }
+}
+
+/// The exact search's events, sent to the thread that owns the run (the
+/// exact search runs on a thread of its own that a stop does not wait for:
+/// parts of it, such as the cheap bound, do not look at the stop flag).
+struct Forward(Mutex<Sender<ExactEvent>>);
+
+impl ExactObserver for Forward {
+    fn on_event(&self, event: &ExactEvent) {
+        let _ = self
+            .0
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .send(event.clone());
+    }
+}
+
+impl ExactObserver for Shared<'_> {
+    fn on_event(&self, event: &ExactEvent) {
+        match event {
+            ExactEvent::CheapBound(b) | ExactEvent::Refuted(b) => {
+                self.raise_lower(b.value, || (b.describe(self.names), proof(b, self.names)))
+            }
+            ExactEvent::Found { pieces, .. } => self.found(*pieces, Source::Sat),
+            _ => {}
+        }
+        self.observer.on_event(&EngineEvent::Exact(event));
+    }
+}
+
+/// Runs `options` on `figures` (named `names` in the answer, input order).
+///
+/// The run ends when the best dissection meets the lower bound, at the
+/// time limit, when `stop` is raised, or when both sides ended by their
+/// work rules: the heuristic after [`RunConfig::idle_rounds`](crate::RunConfig)
+/// rounds without improvement (or the paper's first valid level), the
+/// exact side after [`EXACT_BUDGET`] SAT conflicts (no time limit) or
+/// when its bound meets the best dissection.
+/// The answer is the dissection with the fewest pieces; on a tie the
+/// heuristic's, so that without a time limit the same seed gives the same
+/// answer on any machine and for any thread count.
+pub fn run(
+    figures: &[Figure],
+    names: &[String],
+    options: &RunOptions,
+    stop: &AtomicBool,
+    observer: &dyn EngineObserver,
+) -> Result<Report, EngineError> {
+    run_with(figures, names, options, stop, observer, None)
+}
+
+/// [`run`], with the heuristic's explorations run by `executor` (`None`:
+/// the local thread pool; `dissect.ray` sends them to a Ray cluster). An
+/// executor that returns what [`dissect_core::solver::Explorer::explore`]
+/// returns gives the same answer as [`run`].
+pub fn run_with(
+    figures: &[Figure],
+    names: &[String],
+    options: &RunOptions,
+    stop: &AtomicBool,
+    observer: &dyn EngineObserver,
+    executor: Option<&dyn Executor>,
+) -> Result<Report, EngineError> {
+    dissect_core::solver::check_figures(figures)?;
+    let config = options.config();
+    let lattice = figures[0].lattice();
+    let mirror = config.mirror && lattice.lattice().supports_mirror();
+    let names: Vec<String> = (0..figures.len())
+        .map(|i| {
+            names
+                .get(i)
+                .cloned()
+                .unwrap_or_else(|| format!("figure {i}"))
+        })
+        .collect();
+    let start = Instant::now();
+    let deadline = options.time_limit().and_then(|d| start.checked_add(d));
+    let shared = Shared {
+        start,
+        names: &names,
+        observer,
+        heuristic_best: AtomicUsize::new(usize::MAX),
+        sat_best: AtomicUsize::new(usize::MAX),
+        upper: Arc::new(AtomicUsize::new(usize::MAX)),
+        lower: Mutex::new(LowerBound {
+            value: 1,
+            reason: "every dissection has a piece".to_string(),
+            proof: "every dissection has a piece".to_string(),
+        }),
+        lower_value: AtomicUsize::new(1),
+        history: Mutex::new(Vec::new()),
+    };
+    let strategy = options.strategy();
+    let heuristic_on = strategy != Strategy::Exact;
+    let exact_on =
+        strategy == Strategy::Exact || (config.prove && figures[0].len() <= PROVE_MAX_CELLS);
+    let heuristic_stop = AtomicBool::new(false);
+    let exact_stop = Arc::new(AtomicBool::new(false));
+    let heuristic_done = AtomicBool::new(!heuristic_on);
+    let solver_options = options.solver_options();
+    let anytime = options.anytime();
+    let exact_options = ExactOptions {
+        mirror,
+        mode: if strategy == Strategy::Exact {
+            Mode::Minimum
+        } else {
+            Mode::LowerBound
+        },
+        max_pieces: config.max_pieces,
+        // Without a time limit the exact side beside the heuristic counts
+        // its work (SAT conflicts), so what it proves and finds is the same
+        // on every machine; the run waits for it.
+        conflict_budget: (deadline.is_none() && strategy != Strategy::Exact)
+            .then_some(EXACT_BUDGET),
+        max_encoding_bytes: EXACT_MAX_BYTES,
+        ..ExactOptions::default()
+    };
+    let exact_repair = crate::repair::ExactRepair::new(
+        figures,
+        RepairOptions {
+            mirror,
+            deadline,
+            budget: REPAIR_BUDGET,
+            ..RepairOptions::default()
+        },
+    );
+    let repairer: Option<&dyn Repair> = config.repair.then_some(&exact_repair as &dyn Repair);
+
+    if deadline.is_some_and(|d| Instant::now() >= d) {
+        // No time at all: stop before anything starts.
+        heuristic_stop.store(true, Ordering::SeqCst);
+        exact_stop.store(true, Ordering::SeqCst);
+    }
+    // The exact side: on a thread of its own, with its own copies, its
+    // events forwarded to this thread.
+    let (events_tx, events) = channel::<ExactEvent>();
+    let exact = exact_on.then(|| {
+        let figures = figures.to_vec();
+        let stop = Arc::clone(&exact_stop);
+        let upper = Arc::clone(&shared.upper);
+        let forward = Forward(Mutex::new(events_tx));
+        let options = exact_options.clone();
+        std::thread::spawn(move || search(&figures, &options, &stop, &upper, &forward))
+    });
+    let exact_done = || exact.as_ref().is_none_or(|t| t.is_finished());
+    let drain = || {
+        while let Ok(e) = events.try_recv() {
+            ExactObserver::on_event(&shared, &e);
+        }
+    };
+    let mut end = End::Finished;
+    let heuristic = std::thread::scope(|s| {
+        let heuristic = heuristic_on.then(|| {
+            s.spawn(|| {
+                let r = match strategy {
+                    Strategy::Paper => {
+                        solve_with(figures, &solver_options, &heuristic_stop, &shared, executor)
+                    }
+                    _ => solve_anytime_with(
+                        figures,
+                        &solver_options,
+                        &anytime,
+                        &heuristic_stop,
+                        &shared,
+                        repairer,
+                        executor,
+                    ),
+                };
+                heuristic_done.store(true, Ordering::SeqCst);
+                r
+            })
+        });
+        loop {
+            drain();
+            if stop.load(Ordering::SeqCst) {
+                end = End::Interrupted;
+                break;
+            }
+            if deadline.is_some_and(|d| Instant::now() >= d) {
+                end = End::TimeLimit;
+                break;
+            }
+            let lower = shared.lower_value.load(Ordering::SeqCst);
+            let h = shared.heuristic_best.load(Ordering::SeqCst);
+            let x = shared.sat_best.load(Ordering::SeqCst);
+            // Without a time limit only the heuristic's answer ends the run
+            // early (on a tie it is the answer), so the answer does not
+            // depend on how fast the exact side is.
+            let best = if deadline.is_some() || !heuristic_on {
+                h.min(x)
+            } else {
+                h
+            };
+            // A run that does not prove (no exact side) goes on to its own
+            // end: the paper's `--full-level` keeps looking.
+            if best <= lower && exact_on {
+                end = End::Optimal;
+                break;
+            }
+            let h_done = heuristic_done.load(Ordering::SeqCst);
+            let x_done = exact_done();
+            // Both sides end on their own: the heuristic by its work rule
+            // (or the time limit), the exact side by its conflict budget
+            // (or the time limit).
+            let ended = h_done && x_done;
+            if ended {
+                break;
+            }
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        heuristic_stop.store(true, Ordering::SeqCst);
+        exact_stop.store(true, Ordering::SeqCst);
+        heuristic.map(|t| t.join().expect("heuristic thread"))
+    });
+    // The exact side gets a moment to see its stop flag; past that it is
+    // left to end on its own (what it would have said is not waited for).
+    let grace = Instant::now() + EXACT_GRACE;
+    while !exact_done() && Instant::now() < grace {
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    let exact: Option<ExactOutcome> = match exact {
+        Some(t) if t.is_finished() => Some(t.join().expect("exact thread")?),
+        _ => None,
+    };
+    drain();
+    let heuristic: Option<Outcome> = heuristic.transpose()?;
+
+    let mut best: Option<(Verified, Source, Option<usize>)> = None;
+    if let Some(found) = heuristic.as_ref().and_then(|o| o.found.as_ref()) {
+        let v = Verified::new(
+            lattice,
+            mirror,
+            names.clone(),
+            figures,
+            found.pieces.clone(),
+        )
+        .map_err(|e| EngineError::Unverified("heuristic", e))?;
+        let source = shared
+            .history
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .iter()
+            .rev()
+            .find(|i| i.source != Source::Sat && i.pieces == v.piece_count())
+            .map_or(Source::Search, |i| i.source);
+        best = Some((v, source, Some(found.level)));
+    }
+    if let Some(pieces) = exact.as_ref().and_then(|o| o.found.clone()) {
+        let v = Verified::new(lattice, mirror, names.clone(), figures, pieces)
+            .map_err(|e| EngineError::Unverified("SAT", e))?;
+        if best
+            .as_ref()
+            .is_none_or(|(b, _, _)| v.piece_count() < b.piece_count())
+        {
+            best = Some((v, Source::Sat, None));
+        }
+    }
+    let lower_bound = shared
+        .lower
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .clone();
+    let history = shared
+        .history
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .clone();
+    let count = best.as_ref().map(|(b, _, _)| b.piece_count());
+    let optimal = count.is_some_and(|c| c <= lower_bound.value);
+    if optimal && end == End::Finished {
+        end = End::Optimal;
+    }
+    let outcome = heuristic.as_ref();
+    Ok(Report {
+        seed: config.seed,
+        time_to_first: history.first().map(|i| i.seconds),
+        time_to_best: count
+            .and_then(|c| history.iter().find(|i| i.pieces <= c))
+            .map(|i| i.seconds),
+        source: best.as_ref().map(|b| b.1),
+        level: best.as_ref().and_then(|b| b.2),
+        best: best.map(|b| b.0),
+        seconds: start.elapsed().as_secs_f64(),
+        lower_bound,
+        optimal,
+        history,
+        end,
+        explorations: outcome.map_or(0, |o| o.explorations),
+        rounds: outcome.map_or(0, |o| o.rounds),
+        last_pieces: outcome.map_or(0, |o| o.last_pieces),
+        best_mismatch: outcome.and_then(|o| o.best_mismatch),
+    })
+}
+
+/// Why a dissection meeting `b` is optimal, in words.
+fn proof(b: &Bound, names: &[String]) -> String {
+    match &b.reason {
+        Reason::Sat {
+            refuted, seconds, ..
+        } => format!(
+            "no {refuted}-piece dissection exists; proof {}",
+            if *seconds < 10.0 {
+                format!("{seconds:.1} s")
+            } else {
+                format!("{seconds:.0} s")
+            }
+        ),
+        _ => b.describe(names),
+    }
+}

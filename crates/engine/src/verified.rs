@@ -1,0 +1,73 @@
+//! A dissection that passed the independent verifier.
+
+use dissect_core::io::Dissection;
+use dissect_core::verify::verify;
+use dissect_core::{Cell, Figure, LatticeKind};
+
+/// A dissection checked by [`dissect_core::verify`] against its figures.
+///
+/// # Validity
+/// Built only by [`Verified::new`], which runs the verifier: every piece is
+/// connected and congruent in every figure and the pieces tile each figure.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Verified {
+    dissection: Dissection,
+}
+
+impl Verified {
+    /// Verifies `pieces[f][i]` (cells of piece `i` in figure `f`) against
+    /// `figures`; the error is the verifier's first complaint.
+    pub fn new(
+        lattice: LatticeKind,
+        mirror: bool,
+        names: Vec<String>,
+        figures: &[Figure],
+        pieces: Vec<Vec<Vec<Cell>>>,
+    ) -> Result<Verified, String> {
+        let dissection = Dissection {
+            lattice,
+            mirror: mirror && lattice.lattice().supports_mirror(),
+            names,
+            pieces,
+        };
+        match verify(&dissection, figures) {
+            Ok(_) => Ok(Verified { dissection }),
+            Err(v) => Err(v
+                .first()
+                .map_or_else(|| "rejected".to_string(), |v| v.to_string())),
+        }
+    }
+
+    /// The dissection.
+    pub fn dissection(&self) -> &Dissection {
+        &self.dissection
+    }
+
+    /// `pieces[f][i]`: the cells of piece `i` in figure `f`.
+    pub fn pieces(&self) -> &[Vec<Vec<Cell>>] {
+        &self.dissection.pieces
+    }
+
+    /// The number of pieces.
+    pub fn piece_count(&self) -> usize {
+        self.dissection.piece_count()
+    }
+
+    /// Each piece's area.
+    pub fn areas(&self) -> Vec<usize> {
+        self.dissection
+            .pieces
+            .first()
+            .map_or(Vec::new(), |p| p.iter().map(Vec::len).collect())
+    }
+
+    /// The variance of the piece areas.
+    pub fn variance(&self) -> f64 {
+        let a = self.areas();
+        if a.is_empty() {
+            return 0.0;
+        }
+        let mean = a.iter().sum::<usize>() as f64 / a.len() as f64;
+        a.iter().map(|&x| (x as f64 - mean).powi(2)).sum::<f64>() / a.len() as f64
+    }
+}

@@ -1,0 +1,263 @@
+//! The engine's contracts: options checked once with typed errors, every
+//! answer verified, improvements that only lower the piece count, the
+//! optimal mark where the bound meets the answer, a near miss repaired
+//! exactly, and the same answer for any thread count without a time limit.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Mutex;
+
+use dissect_core::io::parse_figure;
+use dissect_core::solver::Repair;
+use dissect_core::verify::verify_pieces;
+use dissect_core::{Cell, Figure, LatticeKind};
+use dissect_engine::{
+    run, End, EngineEvent, EngineObserver, ExactRepair, OptionsError, RunConfig, RunOptions,
+    Source, Strategy,
+};
+use dissect_exact::RepairOptions;
+
+fn square(rows: &[&str]) -> Figure {
+    parse_figure(&(rows.join("\n") + "\n"), LatticeKind::Square).expect("test figure")
+}
+
+fn small() -> RunConfig {
+    RunConfig {
+        explorations: 24,
+        keep: 6,
+        iterations: 20,
+        ..RunConfig::default()
+    }
+}
+
+#[test]
+fn every_option_rule_is_checked_once_with_a_typed_error() {
+    let bad: Vec<(RunConfig, &str)> = vec![
+        (
+            RunConfig {
+                explorations: 0,
+                ..small()
+            },
+            "--explorations",
+        ),
+        (
+            RunConfig {
+                explorations: 1_000_001,
+                ..small()
+            },
+            "--explorations",
+        ),
+        (RunConfig { keep: 0, ..small() }, "--keep"),
+        (
+            RunConfig {
+                threads: 100_000,
+                ..small()
+            },
+            "--threads",
+        ),
+        (
+            RunConfig {
+                max_pieces: Some(0),
+                ..small()
+            },
+            "--max-pieces",
+        ),
+        (
+            RunConfig {
+                area_weight: -0.5,
+                ..small()
+            },
+            "--area-weight",
+        ),
+        (
+            RunConfig {
+                area_weight: f64::NAN,
+                ..small()
+            },
+            "--area-weight",
+        ),
+        (
+            RunConfig {
+                split_penalty: f64::INFINITY,
+                ..small()
+            },
+            "--split-penalty",
+        ),
+        (
+            RunConfig {
+                time_limit: Some(-1.0),
+                ..small()
+            },
+            "--time-limit",
+        ),
+        (
+            RunConfig {
+                time_limit: Some(f64::NAN),
+                ..small()
+            },
+            "--time-limit",
+        ),
+    ];
+    for (config, name) in bad {
+        let e: OptionsError = RunOptions::new(config.clone()).expect_err(name);
+        assert!(e.to_string().starts_with(name), "{name}: {e}");
+    }
+    // An infinite limit is no limit; the defaults are valid.
+    let o = RunOptions::new(RunConfig {
+        time_limit: Some(f64::INFINITY),
+        ..small()
+    })
+    .unwrap();
+    assert_eq!(o.time_limit(), None);
+    RunOptions::new(RunConfig::default()).expect("defaults are valid");
+}
+
+/// Records the engine's improvements and bounds.
+#[derive(Default)]
+struct Seen {
+    improvements: Mutex<Vec<usize>>,
+    bounds: Mutex<Vec<usize>>,
+}
+
+impl EngineObserver for Seen {
+    fn on_event(&self, event: &EngineEvent<'_>) {
+        match event {
+            EngineEvent::Improved(i) => self.improvements.lock().unwrap().push(i.pieces),
+            EngineEvent::LowerBound(b) => self.bounds.lock().unwrap().push(b.value),
+            _ => {}
+        }
+    }
+}
+
+#[test]
+fn a_run_reports_a_verified_answer_its_history_and_the_optimal_mark() {
+    // A 3×3 and a 4×4 square into a 5×5 square: 4 pieces, proved optimal.
+    let figures = [
+        square(&[
+            "###.....", "###.....", "###.####", "....####", "....####", "....####",
+        ]),
+        square(&["#####", "#####", "#####", "#####", "#####"]),
+    ];
+    let names = vec!["a".to_string(), "b".to_string()];
+    let seen = Seen::default();
+    let options = RunOptions::new(small()).unwrap();
+    let report = run(&figures, &names, &options, &AtomicBool::new(false), &seen).unwrap();
+    let best = report.best.as_ref().expect("a dissection");
+    assert_eq!(
+        verify_pieces(LatticeKind::Square, true, &figures, best.pieces()),
+        Ok(best.piece_count())
+    );
+    assert_eq!(best.piece_count(), 4);
+    assert!(report.optimal);
+    assert_eq!(report.lower_bound.value, 4);
+    assert_eq!(report.end, End::Optimal);
+    let counts: Vec<usize> = report.history.iter().map(|h| h.pieces).collect();
+    assert_eq!(counts, *seen.improvements.lock().unwrap());
+    assert!(counts.windows(2).all(|w| w[1] < w[0]), "{counts:?}");
+    assert_eq!(counts.last(), Some(&4));
+    assert!(report.time_to_first <= report.time_to_best);
+    let json: serde_json::Value =
+        serde_json::from_str(&report.solution_json().expect("json")).unwrap();
+    assert_eq!(json["optimal"], true);
+    assert_eq!(json["lower_bound"], 4);
+    assert_eq!(json["history"].as_array().unwrap().len(), counts.len());
+}
+
+#[test]
+fn without_a_time_limit_the_answer_is_the_same_for_1_and_2_threads() {
+    let figures = [
+        square(&[
+            "########", "#......#", "#.####.#", "#.#..#.#", "#.#..#.#", "#.####.#", "#......#",
+            "########",
+        ]),
+        square(&["########", "########", "########", "########", "########"]),
+    ];
+    assert_eq!(figures[0].len(), figures[1].len());
+    for prove in [false, true] {
+        let answers: Vec<_> = [1, 2]
+            .into_iter()
+            .map(|threads| {
+                let options = RunOptions::new(RunConfig {
+                    seed: 3,
+                    threads,
+                    prove,
+                    ..small()
+                })
+                .unwrap();
+                let r = run(&figures, &[], &options, &AtomicBool::new(false), &()).unwrap();
+                assert!(!r.end.stopped());
+                r.best.expect("a dissection").pieces().to_vec()
+            })
+            .collect();
+        assert_eq!(answers[0], answers[1], "prove {prove}");
+    }
+}
+
+#[test]
+fn a_raised_stop_still_returns_a_verified_answer_or_none() {
+    let figures = [
+        square(&["#########", "#########", "#########", "#########"]),
+        square(&["######", "######", "######", "######", "######", "######"]),
+    ];
+    let stop = AtomicBool::new(true);
+    let options = RunOptions::new(small()).unwrap();
+    let r = run(&figures, &[], &options, &stop, &()).unwrap();
+    assert_eq!(r.end, End::Interrupted);
+    if let Some(best) = &r.best {
+        assert!(verify_pieces(LatticeKind::Square, true, &figures, best.pieces()).is_ok());
+    }
+    // Raised by the first improvement: that one is kept.
+    struct StopAtFirst(AtomicBool);
+    impl EngineObserver for StopAtFirst {
+        fn on_event(&self, event: &EngineEvent<'_>) {
+            if matches!(event, EngineEvent::Improved(_)) {
+                self.0.store(true, Ordering::SeqCst);
+            }
+        }
+    }
+    let obs = StopAtFirst(AtomicBool::new(false));
+    let r = run(&figures, &[], &options, &obs.0, &obs).unwrap();
+    let best = r.best.expect("the first improvement is kept");
+    assert!(verify_pieces(LatticeKind::Square, true, &figures, best.pieces()).is_ok());
+}
+
+/// A near miss on ASCII figures: a 2×4 rectangle and a 1×8 bar, cut as
+/// two 2×2 squares and two 1×4 bars (same areas, wrong shapes: E_M > 0).
+/// The exact repair makes it a dissection with at most two pieces.
+#[test]
+fn a_near_miss_is_repaired_exactly() {
+    let figures = [square(&["####", "####"]), square(&["########"])];
+    let cells = |f: &Figure, keep: &dyn Fn(&Cell) -> bool| -> Vec<Cell> {
+        f.cells().iter().copied().filter(|c| keep(c)).collect()
+    };
+    let near = vec![
+        vec![
+            cells(&figures[0], &|c| c[0] < 2),
+            cells(&figures[0], &|c| c[0] >= 2),
+        ],
+        vec![
+            cells(&figures[1], &|c| c[0] < 4),
+            cells(&figures[1], &|c| c[0] >= 4),
+        ],
+    ];
+    assert!(verify_pieces(LatticeKind::Square, true, &figures, &near).is_err());
+    let repairer = ExactRepair::new(&figures, RepairOptions::default());
+    let fixed = repairer
+        .repair(&near, &AtomicBool::new(false))
+        .expect("repaired");
+    let n = verify_pieces(LatticeKind::Square, true, &figures, &fixed).expect("valid");
+    assert!(n <= 2, "{n} pieces");
+}
+
+#[test]
+fn exact_alone_finds_and_proves_a_minimum() {
+    let figures = [square(&["###", "###"]), square(&["######"])];
+    let options = RunOptions::new(RunConfig {
+        strategy: Strategy::Exact,
+        ..small()
+    })
+    .unwrap();
+    let r = run(&figures, &[], &options, &AtomicBool::new(false), &()).unwrap();
+    assert_eq!(r.source, Some(Source::Sat));
+    assert_eq!(r.best.unwrap().piece_count(), 2);
+    assert!(r.optimal);
+}
