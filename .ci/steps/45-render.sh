@@ -81,7 +81,7 @@ cat > "$out/cubic.json" <<'JSON'
 JSON
 python3 ../shared/tools/verify.py --lattice cubic --solution "$out/cubic.json" "$out/cube.txt" "$out/slab.txt" | grep -q '^valid: '
 "$bin" render "$out/cubic.json" --figures "$out/cube.txt" "$out/slab.txt" --format stl -o "$out/cstl" --clearance 0
-"$bin" voxelize "$out/cstl/piece-A.stl" --cells 4 -o "$out/v.txt"
+"$bin" voxelize "$out/cstl/piece-01-A.stl" --cells 4 -o "$out/v.txt"
 diff <(printf '##\n##\n') "$out/v.txt"
 "$bin" render "$out/cubic.json" --figures "$out/cube.txt" "$out/slab.txt" --format png -o "$out/cubic.png"
 

@@ -41,10 +41,8 @@ pub enum Command {
 }
 
 /// A thread count from 0 (one per core) to 256.
-fn thread_count(s: &str) -> Result<usize, String> {
-    let n: usize = s
-        .parse()
-        .map_err(|_| format!("{s:?} is not a whole number"))?;
+pub fn thread_count(s: &str) -> Result<usize, String> {
+    let n = whole_usize::<0>(s)?;
     if n > 256 {
         return Err(format!(
             "{n} threads is too many (at most 256; 0 means one per core)"
@@ -53,12 +51,65 @@ fn thread_count(s: &str) -> Result<usize, String> {
     Ok(n)
 }
 
+/// A whole number of at least `MIN`. Negative numbers reach this parser
+/// (every command allows them as values) so that `-1` is told what range
+/// it is out of, not to be written `-- -1`.
+pub fn whole<const MIN: u64>(s: &str) -> Result<u64, String> {
+    match s.trim().parse::<i128>() {
+        Ok(n) if n < MIN as i128 => Err(format!("must be a whole number >= {MIN}, got {s}")),
+        Ok(n) => u64::try_from(n).map_err(|_| format!("must be at most {}, got {s}", u64::MAX)),
+        Err(_) => Err(format!("{s:?} is not a whole number (>= {MIN})")),
+    }
+}
+
+/// [`whole`] as a `usize`.
+pub fn whole_usize<const MIN: u64>(s: &str) -> Result<usize, String> {
+    whole::<MIN>(s).and_then(|n| {
+        usize::try_from(n).map_err(|_| format!("must be at most {}, got {s}", usize::MAX))
+    })
+}
+
+/// A finite number.
+#[cfg_attr(not(any(feature = "render", feature = "serve")), allow(dead_code))]
+pub fn finite(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => Err(format!("must be a finite number, got {s}")),
+        Err(_) => Err(format!("{s:?} is not a number")),
+    }
+}
+
+/// A finite number above 0.
+#[cfg_attr(not(any(feature = "render", feature = "serve")), allow(dead_code))]
+pub fn positive(s: &str) -> Result<f64, String> {
+    finite(s).and_then(|v| {
+        if v > 0.0 {
+            Ok(v)
+        } else {
+            Err(format!("must be more than 0, got {s}"))
+        }
+    })
+}
+
+/// A finite number of at least 0.
+#[cfg_attr(not(any(feature = "render", feature = "serve")), allow(dead_code))]
+pub fn non_negative(s: &str) -> Result<f64, String> {
+    finite(s).and_then(|v| {
+        if v >= 0.0 {
+            Ok(v)
+        } else {
+            Err(format!("must be >= 0, got {s}"))
+        }
+    })
+}
+
 fn lattice(s: &str) -> Result<LatticeKind, String> {
     s.parse()
         .map_err(|e: dissect_core::lattice::UnknownLattice| e.to_string())
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct SolveArgs {
     /// The lattice: square, tri4, cubic, tri3 or hex.
     #[arg(long, default_value = "square", value_parser = lattice)]
@@ -67,7 +118,7 @@ pub struct SolveArgs {
     #[arg(long)]
     pub no_mirror: bool,
     /// Seed of every random choice; the same seed gives the same result for any --threads.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = whole::<0>)]
     pub seed: u64,
     /// Worker threads (default: one per core; at most 256).
     #[arg(long, default_value_t = 0, value_parser = thread_count)]
@@ -76,34 +127,34 @@ pub struct SolveArgs {
     #[arg(long, value_name = "SECS")]
     pub time_limit: Option<f64>,
     /// Give up after trying this many pieces.
-    #[arg(long, value_name = "K")]
+    #[arg(long, value_name = "K", value_parser = whole_usize::<0>)]
     pub max_pieces: Option<usize>,
     /// Weight of the area-balance term at level 1 (paper: 0.5; 0 turns it off).
     #[arg(long, default_value_t = 0.5, value_name = "X")]
     pub area_weight: f64,
     /// Random explorations per level (paper: N = 400).
-    #[arg(long, default_value_t = 400, value_name = "N")]
+    #[arg(long, default_value_t = 400, value_name = "N", value_parser = whole_usize::<0>)]
     pub explorations: usize,
     /// Best candidates kept per level (paper: Nb = 30).
-    #[arg(long, default_value_t = 30, value_name = "NB")]
+    #[arg(long, default_value_t = 30, value_name = "NB", value_parser = whole_usize::<0>)]
     pub keep: usize,
     /// Refinement iterations per exploration (paper: R = 100).
-    #[arg(long, default_value_t = 100, value_name = "R")]
+    #[arg(long, default_value_t = 100, value_name = "R", value_parser = whole_usize::<0>)]
     pub iterations: usize,
     /// Objective penalty per disconnected piece during the search.
     #[arg(long, default_value_t = 1000.0, value_name = "X")]
     pub split_penalty: f64,
     /// Level-1 runs tried when splitting the worst pair of pieces.
-    #[arg(long, default_value_t = 4, value_name = "N")]
+    #[arg(long, default_value_t = 4, value_name = "N", value_parser = whole_usize::<0>)]
     pub split_tries: usize,
     /// Run the whole final level to pick the least area variance among more solutions.
     #[arg(long)]
     pub full_level: bool,
     /// Extra rounds of explorations for a level whose best candidate is a near miss (0: the paper's schedule).
-    #[arg(long, default_value_t = 1, value_name = "N")]
+    #[arg(long, default_value_t = 1, value_name = "N", value_parser = whole_usize::<0>)]
     pub extra_rounds: usize,
     /// Stop refining an exploration after this many iterations without fewer conflicts (0: the paper's loop).
-    #[arg(long, default_value_t = 20, value_name = "N")]
+    #[arg(long, default_value_t = 20, value_name = "N", value_parser = whole_usize::<0>)]
     pub patience: usize,
     /// Prove a lower bound by SAT beside the search and say whether the result is optimal (the default).
     #[arg(long, conflicts_with = "no_prove")]
@@ -139,6 +190,7 @@ pub struct SolveArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct VerifyArgs {
     /// The lattice (default: the solution's).
     #[arg(long, value_parser = lattice)]
@@ -152,6 +204,7 @@ pub struct VerifyArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct InfoArgs {
     /// The lattice: square, tri4, cubic, tri3 or hex.
     #[arg(long, default_value = "square", value_parser = lattice)]

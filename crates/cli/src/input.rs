@@ -9,9 +9,42 @@ use dissect_core::{Figure, LatticeKind};
 
 use crate::InputError;
 
-fn read(path: &Path) -> Result<String> {
-    let bytes = std::fs::read(path)
-        .map_err(|e| InputError(format!("{}: cannot read: {e}", path.display())))?;
+/// The largest figure file read, in bytes: a million squares (four million
+/// `tri4` triangles), far beyond what the solver can dissect, and still
+/// read in well under 2 GiB.
+pub const MAX_FIGURE_BYTES: u64 = 1 << 20;
+/// The largest solution file read, in bytes.
+pub const MAX_SOLUTION_BYTES: u64 = 16 << 20;
+/// The largest picture or mesh file read, in bytes.
+#[cfg(feature = "render")]
+pub const MAX_BINARY_BYTES: u64 = 64 << 20;
+
+/// Reads at most `cap` bytes of a file; a longer file (or an endless one,
+/// like `/dev/zero`) is an error, found before more than `cap + 1` bytes are
+/// held.
+pub fn read_capped(path: &Path, cap: u64) -> Result<Vec<u8>> {
+    use std::io::Read;
+    let fail = |e: std::io::Error| InputError(format!("{}: cannot read: {e}", path.display()));
+    let file = std::fs::File::open(path).map_err(fail)?;
+    if file.metadata().map_err(fail)?.is_dir() {
+        return Err(InputError(format!("{}: cannot read: it is a folder", path.display())).into());
+    }
+    let mut bytes = Vec::new();
+    file.take(cap + 1).read_to_end(&mut bytes).map_err(fail)?;
+    if bytes.len() as u64 > cap {
+        return Err(InputError(format!(
+            "{}: too large: files of this kind are read up to {} MiB",
+            path.display(),
+            cap >> 20
+        ))
+        .into());
+    }
+    Ok(bytes)
+}
+
+/// Reads a text file (a figure or a solution) of at most `cap` bytes.
+pub fn read(path: &Path, cap: u64) -> Result<String> {
+    let bytes = read_capped(path, cap)?;
     String::from_utf8(bytes).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
         let valid = std::str::from_utf8(&e.as_bytes()[..at]).unwrap_or_default();
@@ -33,7 +66,7 @@ fn read(path: &Path) -> Result<String> {
 
 /// Reads one figure file.
 pub fn figure(path: &Path, lattice: LatticeKind) -> Result<Figure> {
-    let text = read(path)?;
+    let text = read(path, MAX_FIGURE_BYTES)?;
     parse_figure(&text, lattice).map_err(|e| {
         let hint = match e.kind {
             ParseErrorKind::UnexpectedChar { found, .. }
@@ -97,7 +130,7 @@ pub fn check_writable(path: &Path) -> Result<()> {
 
 /// Reads a solution file.
 pub fn solution(path: &Path) -> Result<(SolutionFile, Dissection)> {
-    let text = read(path)?;
+    let text = read(path, MAX_SOLUTION_BYTES)?;
     parse_solution(&text).map_err(|e| InputError(format!("{}: {e}", path.display())).into())
 }
 

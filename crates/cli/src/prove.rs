@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use dissect_core::LatticeKind;
 use dissect_exact::{search, ExactEvent, ExactObserver, ExactOptions, Mode};
 
@@ -20,6 +20,7 @@ fn lattice(s: &str) -> Result<LatticeKind, String> {
 }
 
 #[derive(clap::Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct BoundArgs {
     /// The lattice: square, tri4, cubic, tri3 or hex.
     #[arg(long, default_value = "square", value_parser = lattice)]
@@ -31,7 +32,7 @@ pub struct BoundArgs {
     #[arg(long, value_name = "SECS")]
     pub time_limit: Option<f64>,
     /// Try to refute no more than this many pieces.
-    #[arg(long, value_name = "K")]
+    #[arg(long, value_name = "K", value_parser = crate::args::whole_usize::<1>)]
     pub max_pieces: Option<usize>,
     /// Print only the last line.
     #[arg(long, short)]
@@ -143,8 +144,7 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
     if let (Some(path), Some(k)) = (&args.dimacs, args.max_pieces) {
         let cnf = dissect_exact::dimacs(&figures, !args.no_mirror, k)
             .map_err(|e| InputError(e.to_string()))?;
-        std::fs::write(path, &cnf.text)
-            .with_context(|| format!("cannot write {}", path.display()))?;
+        crate::output::write_atomic(path, cnf.text.as_bytes())?;
         println!(
             "wrote {}: at most {k} pieces, {} variables, {} clauses",
             path.display(),

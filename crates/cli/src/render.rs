@@ -13,7 +13,8 @@ use dissect_render::svg::ViewOptions;
 use dissect_render::voxelize::VoxelOptions;
 use dissect_render::{RenderError, Scene};
 
-use crate::{InputError, Status};
+use crate::args::{finite, non_negative, positive, whole_usize};
+use crate::{input, output, InputError, Status};
 
 fn lattice(s: &str) -> Result<LatticeKind, String> {
     s.parse()
@@ -21,11 +22,12 @@ fn lattice(s: &str) -> Result<LatticeKind, String> {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct RenderArgs {
     /// The solution JSON.
     #[arg(value_name = "SOLUTION.json")]
     pub solution: PathBuf,
-    /// The figures, in the solution's order (the solution is checked against them).
+    /// The figures, in the solution's order (the solution is checked against them; without them, against the figures its pieces make).
     #[arg(long, num_args = 1.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
     /// svg or png: a picture of every figure; stl: one mesh per piece; ldraw: one LEGO model per figure;
@@ -33,23 +35,23 @@ pub struct RenderArgs {
     /// steps: instructions to print, one SVG sheet per figure, one piece added per step.
     #[arg(long, default_value = "svg", value_parser = ["svg", "png", "stl", "ldraw", "html", "steps"])]
     pub format: String,
-    /// Output: a file (OUT.svg / OUT.png) or a directory (created when missing).
+    /// Output: a file (OUT.svg / OUT.png) or a folder (created when missing; its parent must exist).
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: PathBuf,
     /// Also write a laser cut sheet (cut-sheet.svg, millimetres) of the pieces.
     #[arg(long)]
     pub cut_sheet: bool,
     /// The edge of one cell in millimetres (cut sheet and STL).
-    #[arg(long, default_value_t = 10.0, value_name = "MM")]
+    #[arg(long, default_value_t = 10.0, value_name = "MM", value_parser = positive)]
     pub cell_mm: f64,
     /// The height of 2D pieces in STL, millimetres.
-    #[arg(long, default_value_t = 4.0, value_name = "MM")]
+    #[arg(long, default_value_t = 4.0, value_name = "MM", value_parser = positive)]
     pub thickness: f64,
     /// How much every piece shrinks on each side so printed/cut pieces fit, millimetres.
-    #[arg(long, default_value_t = 0.1, value_name = "MM")]
+    #[arg(long, default_value_t = 0.1, value_name = "MM", value_parser = non_negative)]
     pub clearance: f64,
     /// Pixels per cell in svg/png (default: from the figures' size).
-    #[arg(long, value_name = "PX")]
+    #[arg(long, value_name = "PX", value_parser = positive)]
     pub cell_px: Option<f64>,
     /// Build 2D LDraw models from bricks instead of plates.
     #[arg(long)]
@@ -57,6 +59,7 @@ pub struct RenderArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct RasterizeArgs {
     /// The picture (PNG, JPEG or SVG), or one picture per z layer (bottom first) for --lattice cubic.
     #[arg(required = true, num_args = 1.., value_name = "PICTURE")]
@@ -65,13 +68,13 @@ pub struct RasterizeArgs {
     #[arg(long, default_value = "square", value_parser = lattice)]
     pub lattice: LatticeKind,
     /// Exactly this many cells (triangles for tri4); scale and threshold are searched.
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", value_parser = whole_usize::<1>)]
     pub cells: Option<usize>,
     /// Picture pixels per cell when --cells is not given.
-    #[arg(long, default_value_t = 10.0, value_name = "PX")]
+    #[arg(long, default_value_t = 10.0, value_name = "PX", value_parser = positive)]
     pub scale: f64,
     /// Inside fraction from which a cell is filled when --cells is not given.
-    #[arg(long, default_value_t = 0.5, value_name = "T")]
+    #[arg(long, default_value_t = 0.5, value_name = "T", value_parser = finite)]
     pub threshold: f64,
     /// Light pixels are inside (for pictures without transparency).
     #[arg(long)]
@@ -82,30 +85,25 @@ pub struct RasterizeArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct VoxelizeArgs {
     /// A closed triangle mesh (binary or ASCII STL).
     #[arg(value_name = "MESH.stl")]
     pub mesh: PathBuf,
     /// Exactly this many cubes; the scale is searched.
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", value_parser = whole_usize::<1>)]
     pub cells: Option<usize>,
     /// Mesh units per cube when --cells is not given (default: a tenth of the longest side).
-    #[arg(long, value_name = "UNITS")]
+    #[arg(long, value_name = "UNITS", value_parser = positive)]
     pub scale: Option<f64>,
     /// Write the figure here (default: standard output).
     #[arg(short = 'o', long = "output", value_name = "FIGURE.txt")]
     pub output: Option<PathBuf>,
 }
 
+/// Reads a picture or a mesh (at most [`input::MAX_BINARY_BYTES`]).
 fn read_bytes(path: &Path) -> Result<Vec<u8>> {
-    std::fs::read(path)
-        .map_err(|e| InputError(format!("{}: cannot read: {e}", path.display())).into())
-}
-
-fn read_text(path: &Path) -> Result<String> {
-    let bytes = read_bytes(path)?;
-    String::from_utf8(bytes)
-        .map_err(|_| InputError(format!("{}: not UTF-8 text", path.display())).into())
+    input::read_capped(path, input::MAX_BINARY_BYTES)
 }
 
 /// An error of the render crate about the file `path`.
@@ -113,16 +111,41 @@ fn about(path: &Path, e: RenderError) -> anyhow::Error {
     InputError(format!("{}: {e}", path.display())).into()
 }
 
-fn write(path: &Path, bytes: &[u8]) -> Result<()> {
-    std::fs::write(path, bytes).with_context(|| format!("cannot write {}", path.display()))
+/// Makes `dir` the output folder: it may exist; if not, it is created, but
+/// only it: its parent must already be a folder (a mistyped path never
+/// grows a tree of folders, nor one inside a file's path).
+fn output_dir(dir: &Path) -> Result<()> {
+    if dir.as_os_str().is_empty() || dir.is_dir() {
+        return Ok(());
+    }
+    if dir.exists() {
+        return Err(InputError(format!(
+            "{}: cannot write into it: it is not a folder",
+            dir.display()
+        ))
+        .into());
+    }
+    let parent = match dir.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    if !parent.is_dir() {
+        return Err(InputError(format!(
+            "{}: cannot create the output folder: {} is not an existing folder",
+            dir.display(),
+            parent.display()
+        ))
+        .into());
+    }
+    std::fs::create_dir(dir).with_context(|| format!("cannot create folder {}", dir.display()))
 }
 
 /// Reads a solution and its figures into a scene.
 fn scene(solution: &Path, figures: &[PathBuf]) -> Result<Scene> {
-    let json = read_text(solution)?;
+    let json = input::read(solution, input::MAX_SOLUTION_BYTES)?;
     let texts = figures
         .iter()
-        .map(|p| read_text(p))
+        .map(|p| input::read(p, input::MAX_FIGURE_BYTES))
         .collect::<Result<Vec<_>>>()?;
     let refs: Vec<&str> = texts.iter().map(|s| s.as_str()).collect();
     Scene::from_solution(&json, &refs).map_err(|e| match e {
@@ -134,6 +157,7 @@ fn scene(solution: &Path, figures: &[PathBuf]) -> Result<Scene> {
 }
 
 pub fn run(args: RenderArgs) -> Result<Status> {
+    dissect_render::bounds::check_cell_px(args.cell_px).map_err(|e| InputError(e.to_string()))?;
     let scene = scene(&args.solution, &args.figures)?;
     let physical = PhysicalOptions {
         cell_mm: args.cell_mm,
@@ -156,13 +180,12 @@ pub fn run(args: RenderArgs) -> Result<Status> {
     } else {
         out.clone()
     };
-    if !dir.as_os_str().is_empty() {
-        std::fs::create_dir_all(&dir)
-            .with_context(|| format!("cannot create directory {}", dir.display()))?;
+    if !single_file {
+        output_dir(&dir)?;
     }
     let mut written: Vec<PathBuf> = Vec::new();
     let mut put = |path: PathBuf, bytes: &[u8]| -> Result<()> {
-        write(&path, bytes)?;
+        output::write_atomic(&path, bytes)?;
         written.push(path);
         Ok(())
     };
@@ -247,7 +270,7 @@ fn report(r: &Rasterized, output: &Option<PathBuf>, unit: &str) -> Result<Status
         .map(|k| (s.max[k] - s.min[k] + 1).to_string())
         .collect();
     match output {
-        Some(p) => write(p, r.text.as_bytes())?,
+        Some(p) => output::write_atomic(p, r.text.as_bytes())?,
         None => print!("{}", r.text),
     }
     eprintln!(
@@ -303,14 +326,13 @@ pub fn voxelize(args: VoxelizeArgs) -> Result<Status> {
 /// Writes the SVG views of a solved dissection into `dir` (for `solve --render DIR`).
 pub fn write_views(dir: &Path, d: &dissect_core::io::Dissection) -> Result<()> {
     let scene = Scene::new(d).map_err(|e| anyhow::anyhow!("{e}"))?;
-    std::fs::create_dir_all(dir)
-        .with_context(|| format!("cannot create directory {}", dir.display()))?;
+    output_dir(dir)?;
     let path = dir.join("dissection.svg");
-    write(&path, dissect_render::svg::render(&scene).as_bytes())?;
+    output::write_atomic(&path, dissect_render::svg::render(&scene).as_bytes())?;
     if scene.lattice() != LatticeKind::Cubic {
         let sheet = dissect_render::cut_sheet::render(&scene, &PhysicalOptions::default())
             .map_err(|e| anyhow::anyhow!("{e}"))?;
-        write(&dir.join("cut-sheet.svg"), sheet.as_bytes())?;
+        output::write_atomic(&dir.join("cut-sheet.svg"), sheet.as_bytes())?;
     }
     Ok(())
 }

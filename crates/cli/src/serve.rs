@@ -5,30 +5,43 @@ use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 
 use anyhow::Result;
 use clap::Args;
-use dissect_web::Limits;
+use dissect_web::{Access, Limits};
 
+use crate::args::{positive, whole, whole_usize};
 use crate::{InputError, Status};
 
+/// A TCP port, 0 to 65535.
+fn port(s: &str) -> Result<u16, String> {
+    let n = whole::<0>(s)?;
+    u16::try_from(n).map_err(|_| format!("must be a port from 0 to 65535, got {s}"))
+}
+
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct ServeArgs {
     /// The port (0: any free port; the URL printed says which).
-    #[arg(long, default_value_t = 7878)]
+    #[arg(long, default_value_t = 7878, value_parser = port)]
     pub port: u16,
     /// The address to listen on. Anything but a loopback address exposes the
     /// studio (and the machine's CPU) to the network.
     #[arg(long, default_value_t = IpAddr::V4(Ipv4Addr::LOCALHOST))]
     pub host: IpAddr,
     /// The most cells a figure may have.
-    #[arg(long, default_value_t = Limits::default().max_cells(), value_name = "N")]
+    #[arg(long, default_value_t = Limits::default().max_cells(), value_name = "N", value_parser = whole_usize::<1>)]
     pub max_cells: usize,
     /// The most solves running at once (more are refused with HTTP 429).
-    #[arg(long, default_value_t = Limits::default().max_concurrent_solves(), value_name = "N")]
+    #[arg(long, default_value_t = Limits::default().max_concurrent_solves(), value_name = "N", value_parser = whole_usize::<1>)]
     pub max_solves: usize,
     /// The longest time limit a solve may ask for, in seconds.
-    #[arg(long, default_value_t = Limits::default().max_time_limit(), value_name = "SECS")]
+    #[arg(long, default_value_t = Limits::default().max_time_limit(), value_name = "SECS", value_parser = positive)]
     pub max_time_limit: f64,
+    /// Require this access token on every request (at least 16 letters,
+    /// digits, '-', '_', '.' or '~'). Without it, a server on an address
+    /// other than loopback makes up a random token and prints it in its URL.
+    #[arg(long, value_name = "TOKEN")]
+    pub token: Option<String>,
     /// Worker threads per solve (default: one per core).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = crate::args::thread_count)]
     pub threads: usize,
 }
 
@@ -50,12 +63,29 @@ pub fn run(args: ServeArgs) -> Result<Status> {
         args.threads,
     );
     let addr = SocketAddr::new(args.host, args.port);
-    dissect_web::run_blocking(addr, limits, |bound| {
+    // Beyond loopback only with a token: the one given, or a random one.
+    let token = match (&args.token, args.host.is_loopback()) {
+        (Some(t), _) => Some(t.clone()),
+        (None, false) => Some(Access::random_token()),
+        (None, true) => None,
+    };
+    let access = match &token {
+        Some(t) => Access::with_token(t).map_err(|e| InputError(format!("--token: {e}")))?,
+        None => Access::open(),
+    };
+    dissect_web::run_blocking(addr, limits, access, |bound| {
         // The one line scripts read: where the studio is. Nothing is opened.
-        println!("http://{bound}");
+        match &token {
+            Some(t) => println!("http://{bound}/?token={t}"),
+            None => println!("http://{bound}"),
+        }
         let _ = std::io::stdout().flush();
         if !bound.ip().is_loopback() {
-            eprintln!("dissect: warning: listening on {bound}, reachable from the network");
+            eprintln!(
+                "dissect: warning: listening on {bound}, reachable from the network; \
+                 every request needs the access token (in the URL above, or \
+                 Authorization: Bearer TOKEN)"
+            );
         }
         eprintln!("dissect: serving the studio; press Ctrl-C to stop");
     })

@@ -16,6 +16,8 @@ mod bad_input;
 mod display;
 #[path = "cli/exit_codes.rs"]
 mod exit_codes;
+#[path = "cli/hostile.rs"]
+mod hostile;
 #[path = "cli/info.rs"]
 mod info;
 #[path = "cli/output.rs"]

@@ -114,7 +114,8 @@ pub fn verify(d: &Dissection, figures: &[Figure]) -> Result<usize, Vec<Violation
     if counts.iter().any(|c| *c != counts[0]) {
         return Err(vec![Violation::PieceCount(counts)]);
     }
-    if counts[0] == 0 {
+    // No figure at all counts as no pieces (and must not index `counts`).
+    if counts.first().is_none_or(|c| *c == 0) {
         return Err(vec![Violation::NoPieces]);
     }
     let l = lattice.lattice();

@@ -47,6 +47,11 @@ pub enum RenderError {
     /// Occurs when a mesh is not closed (it has edges not shared by exactly two triangles).
     #[error("the mesh is not closed: {0} edges are not shared by exactly two triangles")]
     OpenMesh(usize),
+    /// Occurs when a picture, a mesh, a drawing or the grid they are
+    /// sampled on would be larger than the bounds of [`crate::bounds`]
+    /// (checked before anything that size is allocated).
+    #[error("too large: {0}")]
+    TooLarge(String),
     /// Occurs when a picture cannot be drawn.
     #[error("cannot draw the picture: {0}")]
     Draw(String),

@@ -15,6 +15,7 @@
 #![forbid(unsafe_code)]
 
 pub mod animation;
+pub mod bounds;
 pub mod colour;
 pub mod cut_sheet;
 

@@ -163,6 +163,9 @@ impl Mesh {
         if bytes.len() >= 84 {
             let n = u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as usize;
             if n.checked_mul(50).and_then(|v| v.checked_add(84)) == Some(bytes.len()) {
+                if n > crate::bounds::MAX_TRIANGLES {
+                    return Err(too_many(n));
+                }
                 let mut triangles = Vec::with_capacity(n);
                 for k in 0..n {
                     let base = 84 + 50 * k + 12;
@@ -207,6 +210,12 @@ impl Mesh {
                     if v.len() != 3 || v.iter().any(|x| !x.is_finite()) {
                         return Err(bad(format!("line {}: a vertex needs 3 numbers", ln + 1)));
                     }
+                    if current.len() == 3 {
+                        return Err(bad(format!(
+                            "line {}: a facet has more than 3 vertices",
+                            ln + 1
+                        )));
+                    }
                     current.push([v[0], v[1], v[2]]);
                 }
                 Some("endloop") => {
@@ -219,6 +228,9 @@ impl Mesh {
                     }
                     triangles.push([current[0], current[1], current[2]]);
                     current.clear();
+                    if triangles.len() > crate::bounds::MAX_TRIANGLES {
+                        return Err(too_many(triangles.len()));
+                    }
                 }
                 Some("solid" | "facet" | "outer" | "endfacet" | "endsolid") | None => {}
                 Some(w) => return Err(bad(format!("line {}: unexpected word {w:?}", ln + 1))),
@@ -229,6 +241,13 @@ impl Mesh {
         }
         Ok(Mesh { triangles })
     }
+}
+
+fn too_many(n: usize) -> RenderError {
+    RenderError::TooLarge(format!(
+        "the mesh has {n} triangles or more; at most {} are read",
+        crate::bounds::MAX_TRIANGLES
+    ))
 }
 
 #[cfg(test)]

@@ -91,8 +91,12 @@ impl Outline {
     pub fn of_cells(lattice: LatticeKind, cells: &[Cell]) -> Outline {
         let unit = grid_unit(lattice);
         let dir_index = |a: HalfPoint, b: HalfPoint| direction(unit, a, b);
+        // A cell listed twice would leave edges that close no curve.
+        let mut cells = cells.to_vec();
+        cells.sort_unstable();
+        cells.dedup();
         let mut edges: HashMap<(HalfPoint, HalfPoint), i32> = HashMap::new();
-        for &c in cells {
+        for &c in &cells {
             let poly = cell_polygon(lattice, c);
             for i in 0..poly.len() {
                 let a = poly[i];

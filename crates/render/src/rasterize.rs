@@ -104,7 +104,8 @@ impl Volume {
     }
 }
 
-/// Decodes a picture into one layer of ink.
+/// Decodes a picture into one layer of ink. Sizes are checked against
+/// [`crate::bounds`] before the pixels are allocated.
 fn decode(bytes: &[u8], invert: bool) -> Result<Volume, RenderError> {
     let head: Vec<u8> = bytes
         .iter()
@@ -115,23 +116,45 @@ fn decode(bytes: &[u8], invert: bool) -> Result<Volume, RenderError> {
     let (w, h, rgba, zoom) = if head == b"<" {
         let text = std::str::from_utf8(bytes)
             .map_err(|_| RenderError::NotAPicture("SVG that is not UTF-8 text".into()))?;
-        let tree = resvg::usvg::Tree::from_str(text, &resvg::usvg::Options::default())
-            .map_err(|e| RenderError::NotAPicture(format!("SVG: {e}")))?;
+        let tree = crate::bounds::parse_svg(text)?;
         let size = tree.size();
-        let zoom = (1024.0 / size.width().max(size.height())).clamp(0.05, 64.0);
-        let pm = crate::png::svg_to_pixmap(text, zoom)?;
+        // Drawn with its longer side 1024 pixels (at most 64 times enlarged).
+        let zoom = (1024.0 / size.width().max(size.height())).min(64.0);
+        let pm = crate::png::svg_to_pixmap(&tree, zoom)?;
         // Un-premultiply is not needed: only alpha and darkness are read.
         (
             pm.width() as usize,
             pm.height() as usize,
-            pm.data().to_vec(),
+            pm.take(),
             zoom as f64,
         )
     } else {
-        let img = image::load_from_memory(bytes).map_err(|e| {
+        let not_a_picture = |e: &dyn std::fmt::Display| {
             RenderError::NotAPicture(format!("not a PNG, JPEG or SVG picture ({e})"))
+        };
+        let reader = || {
+            image::ImageReader::new(std::io::Cursor::new(bytes))
+                .with_guessed_format()
+                .map_err(|e| not_a_picture(&e))
+        };
+        // The header's size first: a small file may claim a huge picture.
+        let (pw, ph) = reader()?.into_dimensions().map_err(|e| not_a_picture(&e))?;
+        crate::bounds::check_picture_size(pw as u64, ph as u64)?;
+        let mut limits = image::Limits::default();
+        limits.max_image_width = Some(crate::bounds::MAX_PICTURE_SIDE);
+        limits.max_image_height = Some(crate::bounds::MAX_PICTURE_SIDE);
+        limits.max_alloc = Some(crate::bounds::MAX_DECODE_BYTES);
+        let mut r = reader()?;
+        r.limits(limits);
+        let img = r.decode().map_err(|e| match e {
+            image::ImageError::Limits(l) => RenderError::TooLarge(format!(
+                "decoding the picture would take more than {} MiB ({l})",
+                crate::bounds::MAX_DECODE_BYTES >> 20
+            )),
+            e => not_a_picture(&e),
         })?;
-        let img = img.to_rgba8();
+        crate::bounds::check_picture_size(img.width() as u64, img.height() as u64)?;
+        let img = img.into_rgba8();
         (
             img.width() as usize,
             img.height() as usize,
@@ -177,16 +200,26 @@ pub fn rasterize(pictures: &[&[u8]], opts: &RasterOptions) -> Result<Rasterized,
     if pictures.is_empty() {
         return Err(RenderError::BadOption("no picture given".into()));
     }
+    check_cells(opts.cells)?;
     if opts.lattice != LatticeKind::Cubic && pictures.len() > 1 {
         return Err(RenderError::BadOption(format!(
             "{} pictures given: only --lattice cubic stacks several pictures (one per z layer)",
             pictures.len()
         )));
     }
-    let layers = pictures
-        .iter()
-        .map(|b| decode(b, opts.invert))
-        .collect::<Result<Vec<_>, _>>()?;
+    let mut layers = Vec::with_capacity(pictures.len());
+    for b in pictures {
+        layers.push(decode(b, opts.invert)?);
+        let w = layers.iter().map(|l| l.w).max().unwrap_or(0) as u64;
+        let h = layers.iter().map(|l| l.h).max().unwrap_or(0) as u64;
+        if w * h * layers.len() as u64 > crate::bounds::MAX_PICTURE_PIXELS * 4 {
+            return Err(RenderError::TooLarge(format!(
+                "{} slices of up to {w}x{h} pixels: more than {} pixels in all",
+                layers.len(),
+                crate::bounds::MAX_PICTURE_PIXELS * 4
+            )));
+        }
+    }
     let w = layers.iter().map(|l| l.w).max().unwrap_or(0);
     let h = layers.iter().map(|l| l.h).max().unwrap_or(0);
     let mut ink = vec![0.0f32; w * h * layers.len()];
@@ -514,6 +547,24 @@ fn snap_tri4(
     Ok((cells, threshold, changed))
 }
 
+/// Cells chosen at one scale: `(cells, threshold, changed)`, or the count
+/// reached when the asked one cannot be met.
+type Chosen = Result<(Vec<Cell>, f64, usize), usize>;
+
+/// Fails unless an asked cell count is from 1 to [`crate::bounds::MAX_GRID_CELLS`].
+pub(crate) fn check_cells(n: Option<usize>) -> Result<(), RenderError> {
+    match n {
+        Some(0) => Err(RenderError::BadOption("--cells must be at least 1".into())),
+        Some(n) if n as u64 > crate::bounds::MAX_GRID_CELLS => {
+            Err(RenderError::BadOption(format!(
+                "--cells must be at most {}, got {n}",
+                crate::bounds::MAX_GRID_CELLS
+            )))
+        }
+        _ => Ok(()),
+    }
+}
+
 /// Samples a volume at a fixed scale, or searches the scale for an exact count.
 pub(crate) fn sample(
     vol: &Volume,
@@ -533,11 +584,26 @@ pub(crate) fn sample(
         lo[1] as f64,
         if vol.z_scaled { lo[2] as f64 } else { 0.0 },
     ];
-    let run = |s: f64| {
-        let span = |k: usize| ((hi[k] - lo[k]) as f64 / s).ceil() as usize + 1;
-        let size = [span(0), span(1), if vol.z_scaled { span(2) } else { vol.d }];
+    let span = |s: f64, k: usize| ((hi[k] - lo[k]) as f64 / s).ceil() + 1.0;
+    let dims = |s: f64| {
+        [
+            span(s, 0),
+            span(s, 1),
+            if vol.z_scaled {
+                span(s, 2)
+            } else {
+                vol.d as f64
+            },
+        ]
+    };
+    // The grid is bounded before it is sampled (a tiny scale would make it
+    // endless).
+    let run = |s: f64| -> Result<Chosen, RenderError> {
+        let d = dims(s);
+        crate::bounds::check_grid(d, "use a larger scale or fewer cells")?;
+        let size = d.map(|v| v as usize);
         let cov = coverage(vol, lattice, origin, s, size);
-        choose(lattice, &cov, n, threshold)
+        Ok(choose(lattice, &cov, n, threshold))
     };
     let finish =
         |cells: Vec<Cell>, s: f64, t: f64, changed: usize| -> Result<Rasterized, RenderError> {
@@ -557,12 +623,10 @@ pub(crate) fn sample(
                 "--scale must be > 0, got {scale}"
             )));
         }
-        let (cells, t, changed) = run(scale).map_err(|_| RenderError::EmptyPicture)?;
+        let (cells, t, changed) = run(scale)?.map_err(|_| RenderError::EmptyPicture)?;
         return finish(cells, scale, t, changed);
     };
-    if n == 0 {
-        return Err(RenderError::BadOption("--cells must be at least 1".into()));
-    }
+    check_cells(Some(n))?;
     // The scale at which the ink's area is n cells.
     // The area of a cell, in squares of the cell's edge (or centre distance).
     let cell_area = match lattice {
@@ -577,7 +641,7 @@ pub(crate) fn sample(
     // Cells much smaller than a sample carry no information.
     let finest = if vol.z_scaled { 1.0 } else { 0.5 };
     if s0 < finest {
-        let nearest = run(finest).map_or_else(|c| c, |(cells, _, _)| cells.len());
+        let nearest = run(finest)?.map_or_else(|c| c, |(cells, _, _)| cells.len());
         return Err(RenderError::Unreachable { asked: n, nearest });
     }
     let mut best: Option<(usize, usize, Vec<Cell>, f64, f64)> = None;
@@ -589,7 +653,7 @@ pub(crate) fn sample(
         if s <= 0.0 {
             continue;
         }
-        match run(s) {
+        match run(s)? {
             Ok((cells, t, changed)) => {
                 if !matches!(&best, Some(b) if (changed, k) >= (b.0, b.1)) {
                     best = Some((changed, k, cells, s, t));

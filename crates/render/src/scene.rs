@@ -18,8 +18,8 @@ use crate::RenderError;
 /// At least one figure; every figure has the same number (at least one) of
 /// non-empty pieces; for 2D lattices `outlines[f][i]` is the outline of
 /// `pieces[f][i]` and `figure_outlines[f]` that of the whole figure. A scene
-/// built by [`Scene::from_solution`] with figures is also a valid dissection
-/// (checked by `dissect_core::verify`).
+/// built by [`Scene::from_solution`] or [`Scene::verified`] is also a valid
+/// dissection (checked by `dissect_core::verify`).
 #[derive(Clone, Debug)]
 pub struct Scene {
     lattice: LatticeKind,
@@ -94,29 +94,51 @@ impl Scene {
         })
     }
 
-    /// A scene from a solution JSON text. When figure texts are given (in
-    /// the solution's order) the solution must be a valid dissection of
-    /// them.
+    /// A scene of a dissection that is checked by `dissect_core::verify`
+    /// against the figures its own pieces make: pieces disjoint, connected
+    /// and congruent across figures. So nothing that is not a dissection is
+    /// ever drawn, even without the figure files.
+    pub fn verified(d: &Dissection) -> Result<Scene, RenderError> {
+        // The shape first (figures, pieces, counts), with its own messages.
+        let scene = Scene::new(d)?;
+        let figs = d
+            .pieces
+            .iter()
+            .map(|fp| {
+                dissect_core::Figure::new(d.lattice, fp.iter().flatten().copied())
+                    .map_err(|e| RenderError::Invalid(e.to_string()))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        if let Err(v) = dissect_core::verify::verify(d, &figs) {
+            return Err(RenderError::Invalid(v[0].to_string()));
+        }
+        Ok(scene)
+    }
+
+    /// A scene from a solution JSON text, which must be a valid dissection:
+    /// of the figure texts when they are given (in the solution's order),
+    /// else of the figures its own pieces make (see [`Scene::verified`]).
     pub fn from_solution(solution: &str, figures: &[&str]) -> Result<Scene, RenderError> {
         let (_, d) = parse_solution(solution)?;
-        if !figures.is_empty() {
-            if figures.len() != d.pieces.len() {
-                return Err(RenderError::Mismatch(format!(
-                    "the solution has {} figures, {} were given",
-                    d.pieces.len(),
-                    figures.len()
-                )));
-            }
-            let figs = figures
-                .iter()
-                .enumerate()
-                .map(|(index, t)| {
-                    parse_figure(t, d.lattice).map_err(|error| RenderError::Figure { index, error })
-                })
-                .collect::<Result<Vec<_>, _>>()?;
-            if let Err(v) = dissect_core::verify::verify(&d, &figs) {
-                return Err(RenderError::Invalid(v[0].to_string()));
-            }
+        if figures.is_empty() {
+            return Scene::verified(&d);
+        }
+        if figures.len() != d.pieces.len() {
+            return Err(RenderError::Mismatch(format!(
+                "the solution has {} figures, {} were given",
+                d.pieces.len(),
+                figures.len()
+            )));
+        }
+        let figs = figures
+            .iter()
+            .enumerate()
+            .map(|(index, t)| {
+                parse_figure(t, d.lattice).map_err(|error| RenderError::Figure { index, error })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        if let Err(v) = dissect_core::verify::verify(&d, &figs) {
+            return Err(RenderError::Invalid(v[0].to_string()));
         }
         Scene::new(&d)
     }

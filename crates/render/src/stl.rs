@@ -79,7 +79,7 @@ pub fn render(
 ) -> Result<Vec<(String, Vec<u8>)>, RenderError> {
     (0..scene.piece_count())
         .map(|i| {
-            let name = format!("piece-{}", scene.label(i));
+            let name = piece_file_stem(scene, i);
             let mesh = piece_mesh(scene, i, opts)?;
             if mesh.bad_edges() > 0 {
                 return Err(RenderError::BadOption(format!(
@@ -90,6 +90,21 @@ pub fn render(
             Ok((format!("{name}.stl"), mesh.to_binary_stl(&name)))
         })
         .collect()
+}
+
+/// The file name (without `.stl`) of piece `i`: `piece-01-A`, its number
+/// padded to the width of the piece count (at least 2 digits), then its
+/// label when it has one (pieces past the 62nd share the label `*`). The
+/// number makes every name unique for any piece count, also where file
+/// names are not case-sensitive (`piece-01-A`, `piece-27-a`).
+pub fn piece_file_stem(scene: &Scene, i: usize) -> String {
+    let width = scene.piece_count().to_string().len().max(2);
+    let label = scene.label(i);
+    if label.chars().all(|c| c.is_ascii_alphanumeric()) {
+        format!("piece-{:0width$}-{label}", i + 1)
+    } else {
+        format!("piece-{:0width$}", i + 1)
+    }
 }
 
 /// The mesh of piece `i` (as it lies in the first figure).

@@ -12,6 +12,9 @@ use crate::mesh::Mesh;
 use crate::rasterize::{sample, Rasterized, Volume};
 use crate::RenderError;
 
+/// The most ray and triangle pairs tested (and crossings kept).
+const MAX_CROSSINGS: usize = 1 << 25;
+
 /// What to make.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct VoxelOptions {
@@ -24,6 +27,7 @@ pub struct VoxelOptions {
 
 /// Turns a closed STL mesh into a `cubic` figure.
 pub fn voxelize(stl: &[u8], opts: &VoxelOptions) -> Result<Rasterized, RenderError> {
+    crate::rasterize::check_cells(opts.cells)?;
     let mesh = Mesh::from_stl(stl)?;
     let open = mesh.open_edges();
     if open > 0 {
@@ -67,6 +71,9 @@ pub fn voxelize(stl: &[u8], opts: &VoxelOptions) -> Result<Rasterized, RenderErr
     // Crossings of the vertical ray through every column, from triangles.
     let mut columns: Vec<Vec<f64>> = vec![Vec::new(); w * hh];
     let (ex, ey) = (1.37e-4 * h, 2.91e-4 * h);
+    // Every crossing is kept: a mesh of many large overlapping triangles
+    // could otherwise fill the memory.
+    let mut crossings = 0usize;
     for t in tris {
         let (x0, x1) = (
             t.iter().map(|p| p[0]).fold(f64::MAX, f64::min),
@@ -84,6 +91,12 @@ pub fn voxelize(stl: &[u8], opts: &VoxelOptions) -> Result<Rasterized, RenderErr
         let den = (b[1] - c[1]) * (a[0] - c[0]) + (c[0] - b[0]) * (a[1] - c[1]);
         if den == 0.0 {
             continue;
+        }
+        crossings += (i1 + 1).saturating_sub(i0) * (j1 + 1).saturating_sub(j0);
+        if crossings > MAX_CROSSINGS {
+            return Err(RenderError::TooLarge(format!(
+                "the mesh's triangles cover its sampling grid more than {MAX_CROSSINGS} times"
+            )));
         }
         for i in i0..=i1 {
             for j in j0..=j1 {

@@ -326,7 +326,7 @@ fn check_meshes(c: &Case, opts: &PhysicalOptions) {
         LatticeKind::Hex => (3f64.sqrt() / 2.0 * opts.cell_mm.powi(2), opts.thickness_mm),
     };
     for (i, (name, bytes)) in files.iter().enumerate() {
-        assert_eq!(name, &format!("piece-{}.stl", s.label(i)));
+        assert_eq!(name, &format!("piece-{:02}-{}.stl", i + 1, s.label(i)));
         let m = Mesh::from_stl(bytes).unwrap();
         assert_eq!(
             m.bad_edges(),

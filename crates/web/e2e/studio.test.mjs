@@ -217,7 +217,7 @@ test('a shipped example solves with live progress; hovering a piece highlights i
   assert.equal(png.subarray(1, 4).toString(), 'PNG');
   const zip = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-stl]')));
   assert.equal(zip.subarray(0, 2).toString(), 'PK');
-  assert.match(zip.toString('latin1'), /piece-A\.stl/);
+  assert.match(zip.toString('latin1'), /piece-01-A\.stl/);
   const sheet = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-cut]')), 'utf8');
   assert.match(sheet, /<svg[^>]*mm/);
   const ldraw = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-ldraw]')));

@@ -43,6 +43,14 @@ pub enum ApiError {
     /// Occurs when the server is already running as many solves as allowed.
     #[error("{0} solve(s) are already running; stop one or try again later")]
     Busy(usize),
+    /// Occurs when the server is already making as many pictures
+    /// (rasterizations, picture downloads) as allowed.
+    #[error("{0} picture(s) are already being made; try again in a moment")]
+    PicturesBusy(usize),
+    /// Occurs when a server started with an access token gets a request
+    /// without it.
+    #[error("{0}")]
+    Unauthorized(String),
     /// Occurs when a path names no route or no solve.
     #[error("{0}")]
     NotFound(String),
@@ -80,7 +88,8 @@ impl ApiError {
                 StatusCode::UNPROCESSABLE_ENTITY
             }
             ApiError::TooLarge(_) => StatusCode::PAYLOAD_TOO_LARGE,
-            ApiError::Busy(_) => StatusCode::TOO_MANY_REQUESTS,
+            ApiError::Busy(_) | ApiError::PicturesBusy(_) => StatusCode::TOO_MANY_REQUESTS,
+            ApiError::Unauthorized(_) => StatusCode::UNAUTHORIZED,
             ApiError::NotFound(_) => StatusCode::NOT_FOUND,
             ApiError::MethodNotAllowed => StatusCode::METHOD_NOT_ALLOWED,
             ApiError::Forbidden(_) => StatusCode::FORBIDDEN,
@@ -99,7 +108,8 @@ impl ApiError {
             ApiError::BadSolution(_) => "bad_solution",
             ApiError::UnequalAreas(_) => "unequal_areas",
             ApiError::TooLarge(_) => "too_large",
-            ApiError::Busy(_) => "busy",
+            ApiError::Busy(_) | ApiError::PicturesBusy(_) => "busy",
+            ApiError::Unauthorized(_) => "unauthorized",
             ApiError::NotFound(_) => "not_found",
             ApiError::MethodNotAllowed => "method_not_allowed",
             ApiError::Forbidden(_) => "forbidden",

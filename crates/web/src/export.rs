@@ -65,6 +65,7 @@ fn render_error(e: RenderError) -> ApiError {
     match e {
         RenderError::BadOption(m) => ApiError::BadValue(m),
         RenderError::Draw(m) => ApiError::Internal(m),
+        RenderError::TooLarge(m) => ApiError::TooLarge(m),
         other => ApiError::BadSolution(other.to_string()),
     }
 }
@@ -130,7 +131,7 @@ pub fn export(format: &str, req: &ExportRequest, limits: &Limits) -> Result<Down
         )));
     }
     let d = dissection(req, limits)?;
-    let scene = Scene::new(&d).map_err(render_error)?;
+    let scene = Scene::verified(&d).map_err(render_error)?;
     Ok(match format {
         "svg" => Download {
             name: "dissection.svg".into(),

@@ -14,6 +14,7 @@ pub struct Limits {
     max_concurrent_solves: usize,
     max_time_limit: f64,
     threads: usize,
+    max_concurrent_pictures: usize,
 }
 
 impl Default for Limits {
@@ -25,6 +26,7 @@ impl Default for Limits {
             max_concurrent_solves: 2,
             max_time_limit: 600.0,
             threads: 0,
+            max_concurrent_pictures: 2,
         }
     }
 }
@@ -57,7 +59,20 @@ impl Limits {
                 Limits::default().max_time_limit
             },
             threads,
+            max_concurrent_pictures: Limits::default().max_concurrent_pictures,
         }
+    }
+
+    /// The same limits with at most `n` (at least 1) pictures made at once
+    /// (rasterizations and picture downloads; more get HTTP 429).
+    pub fn with_max_concurrent_pictures(mut self, n: usize) -> Limits {
+        self.max_concurrent_pictures = n.max(1);
+        self
+    }
+
+    /// Pictures made at once.
+    pub fn max_concurrent_pictures(&self) -> usize {
+        self.max_concurrent_pictures
     }
 
     /// Cells per figure.

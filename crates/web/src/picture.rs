@@ -59,6 +59,7 @@ pub fn rasterize_picture(
     let name = q.name.clone().unwrap_or_else(|| "picture.txt".into());
     let r = rasterize(&[picture], &opts).map_err(|e| match e {
         RenderError::BadOption(m) => ApiError::BadValue(format!("{name}: {m}")),
+        RenderError::TooLarge(m) => ApiError::TooLarge(format!("{name}: {m}")),
         other => ApiError::BadFigure(format!("{name}: {other}")),
     })?;
     let figure = figures::normalized(&r.figure);

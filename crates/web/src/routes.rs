@@ -37,6 +37,7 @@ use crate::error::ApiError;
 use crate::figures::{self, FigureInput};
 use crate::jobs::{Job, Jobs, Request, State as JobState};
 use crate::limits::Limits;
+use crate::security::{self, Access};
 use crate::{assets, examples, export, picture};
 
 /// The largest request body, in bytes.
@@ -47,21 +48,41 @@ pub const MAX_BODY: usize = 8 * 1024 * 1024;
 pub struct AppState {
     pub(crate) limits: Arc<Limits>,
     pub(crate) jobs: Arc<Jobs>,
+    /// Permits for pictures made at once (rasterizations, downloads).
+    pub(crate) pictures: Arc<tokio::sync::Semaphore>,
+    pub(crate) access: Arc<Access>,
 }
 
 impl AppState {
     /// A fresh state with no job.
-    pub fn new(limits: Limits) -> AppState {
+    pub fn new(limits: Limits, access: Access) -> AppState {
         AppState {
             jobs: Arc::new(Jobs::new(limits.max_concurrent_solves())),
+            pictures: Arc::new(tokio::sync::Semaphore::new(
+                limits.max_concurrent_pictures(),
+            )),
             limits: Arc::new(limits),
+            access: Arc::new(access),
         }
+    }
+
+    /// A permit to make a picture, or 429 when as many are being made as allowed.
+    fn picture_permit(&self) -> Result<tokio::sync::OwnedSemaphorePermit, ApiError> {
+        Arc::clone(&self.pictures)
+            .try_acquire_owned()
+            .map_err(|_| ApiError::PicturesBusy(self.limits.max_concurrent_pictures()))
     }
 }
 
-/// The whole application for the given limits.
+/// The whole application for the given limits, open to anyone who reaches
+/// it (for loopback servers).
 pub fn router(limits: Limits) -> Router {
-    router_with_state(AppState::new(limits))
+    router_with_state(AppState::new(limits, Access::open()))
+}
+
+/// The whole application for the given limits and access rule.
+pub fn router_with_access(limits: Limits, access: Access) -> Router {
+    router_with_state(AppState::new(limits, access))
 }
 
 pub(crate) fn router_with_state(state: AppState) -> Router {
@@ -78,7 +99,10 @@ pub(crate) fn router_with_state(state: AppState) -> Router {
         .fallback(static_or_404)
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
         .layer(DefaultBodyLimit::max(MAX_BODY))
-        .layer(axum::middleware::from_fn(guard))
+        .layer(axum::middleware::from_fn_with_state(
+            Arc::clone(&state.access),
+            security::guard,
+        ))
         .layer(tower_http::catch_panic::CatchPanicLayer::custom(
             |_: Box<dyn std::any::Any + Send>| {
                 ApiError::Internal("the request made the server fail".into()).into_response()
@@ -331,10 +355,14 @@ async fn export_file(
 ) -> Result<Response, ApiError> {
     let req: export::ExportRequest = parse(body)?;
     let limits = Arc::clone(&s.limits);
+    let permit = s.picture_permit()?;
     // Drawing and meshing take CPU time: off the async workers.
-    let file = tokio::task::spawn_blocking(move || export::export(&format, &req, &limits))
-        .await
-        .map_err(|e| ApiError::Internal(format!("the exporter failed: {e}")))??;
+    let file = tokio::task::spawn_blocking(move || {
+        let _permit = permit;
+        export::export(&format, &req, &limits)
+    })
+    .await
+    .map_err(|e| ApiError::Internal(format!("the exporter failed: {e}")))??;
     Ok((
         [
             (header::CONTENT_TYPE, file.content_type.to_string()),
@@ -363,51 +391,14 @@ async fn rasterize_picture(
         }
     })?;
     let limits = Arc::clone(&s.limits);
-    let v = tokio::task::spawn_blocking(move || picture::rasterize_picture(&q, &bytes, &limits))
-        .await
-        .map_err(|e| ApiError::Internal(format!("the rasterizer failed: {e}")))??;
+    let permit = s.picture_permit()?;
+    let v = tokio::task::spawn_blocking(move || {
+        let _permit = permit;
+        picture::rasterize_picture(&q, &bytes, &limits)
+    })
+    .await
+    .map_err(|e| ApiError::Internal(format!("the rasterizer failed: {e}")))??;
     Ok(Json(v))
-}
-
-/// Refuses what other web sites could make a browser send: requests naming
-/// the server by a host name other than `localhost` (DNS rebinding), and
-/// bodies that are not JSON on the JSON routes (a cross-site form post).
-async fn guard(req: axum::extract::Request, next: axum::middleware::Next) -> Response {
-    if let Some(host) = req.headers().get(header::HOST) {
-        let host = host.to_str().unwrap_or("");
-        let name = if host.starts_with('[') {
-            host.split(']').next().map(|h| &h[1..]).unwrap_or("")
-        } else {
-            host.split(':').next().unwrap_or("")
-        };
-        let ok = name.eq_ignore_ascii_case("localhost") || name.parse::<std::net::IpAddr>().is_ok();
-        if !ok {
-            return ApiError::Forbidden(format!(
-                "host {host:?} refused: open the studio by its IP address or as localhost"
-            ))
-            .into_response();
-        }
-    }
-    let path = req.uri().path();
-    if req.method() == axum::http::Method::POST
-        && path.starts_with("/api/")
-        && path != "/api/rasterize"
-    {
-        if let Some(ty) = req.headers().get(header::CONTENT_TYPE) {
-            let ty = ty.to_str().unwrap_or("");
-            if !ty
-                .trim_start()
-                .to_ascii_lowercase()
-                .starts_with("application/json")
-            {
-                return ApiError::UnsupportedMediaType(format!(
-                    "send JSON with content-type: application/json (got {ty:?})"
-                ))
-                .into_response();
-            }
-        }
-    }
-    next.run(req).await
 }
 
 /// An engine message about a setting (`--area-weight must ...`) with the

@@ -388,9 +388,9 @@ async fn exports_are_made_by_the_renderer() {
     assert_eq!(s, StatusCode::OK);
     assert!(name.contains(".zip"), "{name}");
     assert_eq!(&zip[..2], b"PK");
-    // One STL per piece: piece-A.stl and piece-B.stl are named in the archive.
+    // One STL per piece: piece-01-A.stl and piece-02-B.stl are named in the archive.
     let text = String::from_utf8_lossy(&zip);
-    assert!(text.contains("piece-A.stl") && text.contains("piece-B.stl"));
+    assert!(text.contains("piece-01-A.stl") && text.contains("piece-02-B.stl"));
 }
 
 #[tokio::test]
@@ -424,7 +424,7 @@ async fn bad_export_requests_get_json_errors() {
         ),
         (
             "svg",
-            json!({"solution": {"lattice": "square", "figures": [{"pieces": [[[0, 0], [99999, 0]]]}]}}),
+            json!({"solution": {"format": "dissection-solution/1", "lattice": "square", "figures": [{"pieces": [[[0, 0], [99999, 0]]]}]}}),
             StatusCode::PAYLOAD_TOO_LARGE,
             "beyond",
         ),
@@ -473,13 +473,13 @@ async fn cut_sheets_and_ldraw_models_follow_the_lattice() {
         String::from_utf8_lossy(&bytes)
     );
     // No LEGO triangles, no cut sheet of cubes: clear errors.
-    let tri = json!({"solution": {"lattice": "tri4", "figures": [
+    let tri = json!({"solution": {"format": "dissection-solution/1", "lattice": "tri4", "figures": [
         {"pieces": [[[0, 0, 0]]]}, {"pieces": [[[5, 5, 0]]]}]}});
     let (s, _, bytes) = export(&app, "ldraw", &tri).await;
     let v: Value = serde_json::from_slice(&bytes).unwrap();
     assert_eq!(s, StatusCode::BAD_REQUEST, "{v}");
     assert!(message(&v).contains("LDraw"), "{v}");
-    let cubes = json!({"solution": {"lattice": "cubic", "figures": [
+    let cubes = json!({"solution": {"format": "dissection-solution/1", "lattice": "cubic", "figures": [
         {"pieces": [[[0, 0, 0]]]}, {"pieces": [[[0, 0, 1]]]}]}});
     let (s, _, bytes) = export(&app, "cut-sheet", &cubes).await;
     let v: Value = serde_json::from_slice(&bytes).unwrap();

@@ -183,8 +183,12 @@ const SOLUTION_ERRORS: &[(&str, &[&str])] = &[
         &["s.json: line 1, column 56: invalid type: string \"one\""],
     ),
     (
-        "{\"lattice\": \"hexagonal\", \"figures\": []}",
+        "{\"lattice\": \"hexagonal\", \"figures\": [], \"format\": \"dissection-solution/1\"}",
         &["s.json: unknown lattice \"hexagonal\""],
+    ),
+    (
+        "{\"lattice\": \"square\", \"figures\": []}",
+        &["s.json: no \"format\" key"],
     ),
     (
         "{\"format\": \"other/2\", \"lattice\": \"square\", \"figures\": []}",
@@ -192,18 +196,18 @@ const SOLUTION_ERRORS: &[(&str, &[&str])] = &[
     ),
     // Cells of the wrong shape, located in the text.
     (
-        "{\"lattice\": \"square\", \"figures\": [\n  {\"pieces\": [[[0,0],[1,0],[2,0]]]},\n  {\"pieces\": [[[0,0],[1,0],[0,1,0]]]}\n]}\n",
+        "{\"lattice\": \"square\", \"figures\": [\n  {\"pieces\": [[[0,0],[1,0],[2,0]]]},\n  {\"pieces\": [[[0,0],[1,0],[0,1,0]]]}\n], \"format\": \"dissection-solution/1\"}\n",
         &[
             "s.json: line 3, column 28: figure 1 piece 0: bad cell [0, 1, 0]",
             "a square cell is [x, y]",
         ],
     ),
     (
-        "{\"lattice\": \"tri4\", \"figures\": [\n  {\"pieces\": [[[0,0,0],\n    [0,0,4]]]}]}\n",
+        "{\"lattice\": \"tri4\", \"figures\": [\n  {\"pieces\": [[[0,0,0],\n    [0,0,4]]]}], \"format\": \"dissection-solution/1\"}\n",
         &["s.json: line 3, column 5: figure 0 piece 0: bad cell [0, 0, 4]", "t in 0..=3"],
     ),
     (
-        "{\"lattice\": \"cubic\", \"figures\": [{\"pieces\": [[[0,0]]]}]}",
+        "{\"lattice\": \"cubic\", \"figures\": [{\"pieces\": [[[0,0]]]}], \"format\": \"dissection-solution/1\"}",
         &["s.json: line 1, column 47: figure 0 piece 0: bad cell [0, 0]", "[x, y, z]"],
     ),
 ];

@@ -342,3 +342,90 @@ pub fn golden(name: &str, actual: &str) {
         );
     }
 }
+
+impl Sandbox {
+    /// Runs the binary under a 2 GiB address-space cap (`ulimit -v`, as
+    /// `prlimit --as=2147483648`), killing it after `limit`. Panics if it
+    /// panicked, overflowed its stack, aborted or ran out of time.
+    pub fn run_capped(&self, args: &[&str], limit: Duration) -> Run {
+        let start = Instant::now();
+        let mut c = Command::new("sh");
+        c.arg("-c")
+            .arg("ulimit -v 2097152 && exec \"$0\" \"$@\"")
+            .arg(env!("CARGO_BIN_EXE_dissect"))
+            .args(args)
+            .current_dir(self.dir.path())
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .env_remove("RUST_BACKTRACE");
+        let mut child = c.spawn().expect("start dissect");
+        let mut stdout = child.stdout.take().expect("piped");
+        let mut stderr = child.stderr.take().expect("piped");
+        let out = std::thread::spawn(move || {
+            let mut s = Vec::new();
+            let _ = std::io::Read::read_to_end(&mut stdout, &mut s);
+            s
+        });
+        let err = std::thread::spawn(move || {
+            let mut s = Vec::new();
+            let _ = std::io::Read::read_to_end(&mut stderr, &mut s);
+            s
+        });
+        let status = loop {
+            if let Some(s) = child.try_wait().expect("wait for dissect") {
+                break s;
+            }
+            if start.elapsed() > limit {
+                let _ = child.kill();
+                let _ = child.wait();
+                panic!("{args:?} did not end within {limit:?}");
+            }
+            std::thread::sleep(Duration::from_millis(10));
+        };
+        let run = Run {
+            code: status.code(),
+            stdout: String::from_utf8_lossy(&out.join().expect("stdout")).into_owned(),
+            stderr: String::from_utf8_lossy(&err.join().expect("stderr")).into_owned(),
+            elapsed: start.elapsed(),
+        };
+        assert_no_panic(&run);
+        for bad in [
+            "overflowed its stack",
+            "memory allocation",
+            "fatal runtime error",
+            "abort",
+        ] {
+            assert!(
+                !run.stderr.contains(bad),
+                "{args:?}: {bad}\n{}",
+                clip(&run.stderr)
+            );
+        }
+        assert!(
+            run.code.is_some(),
+            "{args:?} was killed by a signal\n{}",
+            clip(&run.stderr)
+        );
+        run
+    }
+
+    /// Writes bytes into the sandbox and returns the name.
+    pub fn write_bytes(&self, name: &str, bytes: &[u8]) -> String {
+        std::fs::write(self.path(name), bytes).expect("write test file");
+        name.to_string()
+    }
+}
+
+impl Running {
+    /// The first line the binary wrote on stdout.
+    pub fn stdout_line(&mut self) -> String {
+        let out = self.child.stdout.as_mut().expect("piped stdout");
+        let mut line = Vec::new();
+        let mut byte = [0u8; 1];
+        while std::io::Read::read(out, &mut byte).unwrap_or(0) == 1 && byte[0] != b'\n' {
+            line.push(byte[0]);
+        }
+        String::from_utf8_lossy(&line).into_owned()
+    }
+}

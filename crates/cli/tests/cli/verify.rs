@@ -89,7 +89,7 @@ fn verify_honours_mirror_false() {
     let z = sb.write("z.txt", "##.\n.##\n");
     let sol = |mirror: bool| {
         format!(
-            r#"{{"lattice": "square", "mirror": {mirror}, "figures": [
+            r#"{{"format": "dissection-solution/1", "lattice": "square", "mirror": {mirror}, "figures": [
   {{"name": "s.txt", "pieces": [[[1,0],[2,0],[0,1],[1,1]]]}},
   {{"name": "z.txt", "pieces": [[[0,0],[1,0],[1,1],[2,1]]]}}]}}"#
         )

@@ -63,6 +63,10 @@ pub enum SolutionError {
         /// serde_json's message.
         message: String,
     },
+    /// Occurs when the `format` key is missing (FORMAT.md: every solution
+    /// file says `"format": "dissection-solution/1"`).
+    #[error("no \"format\" key: a solution file says \"format\": \"dissection-solution/1\"")]
+    MissingFormat,
     /// Occurs when `format` names another format.
     #[error("format is {0:?}, expected \"dissection-solution/1\"")]
     WrongFormat(String),
@@ -103,10 +107,10 @@ pub fn parse_solution(text: &str) -> Result<(SolutionFile, Dissection), Solution
             .unwrap_or_default()
             .to_string(),
     })?;
-    if let Some(f) = &file.format {
-        if f != SOLUTION_FORMAT {
-            return Err(SolutionError::WrongFormat(f.clone()));
-        }
+    match &file.format {
+        None => return Err(SolutionError::MissingFormat),
+        Some(f) if f != SOLUTION_FORMAT => return Err(SolutionError::WrongFormat(f.clone())),
+        Some(_) => {}
     }
     let lattice: LatticeKind = file
         .lattice

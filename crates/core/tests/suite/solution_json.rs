@@ -59,19 +59,34 @@ fn golden_square_solution() {
 
 #[test]
 fn defaults_and_unknown_keys() {
-    let text = r#"{"lattice": "tri4", "figures": [{"pieces": [[[0,0,1]]]}], "score": 3}"#;
+    let text = r#"{"format": "dissection-solution/1", "lattice": "tri4", "figures": [{"pieces": [[[0,0,1]]]}], "score": 3}"#;
     let (file, d) = parse_solution(text).unwrap();
     assert!(d.mirror, "mirror defaults to true in 2D");
     assert_eq!(d.names, vec![String::new()]);
     assert_eq!(d.pieces, vec![vec![vec![[0, 0, 1]]]]);
     assert_eq!(file.extra["score"], 3);
-    let (_, d) = parse_solution(r#"{"lattice": "cubic", "figures": []}"#).unwrap();
+    let (_, d) =
+        parse_solution(r#"{"format": "dissection-solution/1", "lattice": "cubic", "figures": []}"#)
+            .unwrap();
     assert!(!d.mirror, "never mirror in 3D");
-    let (_, d) = parse_solution(r#"{"lattice": "cubic", "mirror": true, "figures": []}"#).unwrap();
+    let (_, d) = parse_solution(
+        r#"{"format": "dissection-solution/1", "lattice": "cubic", "mirror": true, "figures": []}"#,
+    )
+    .unwrap();
     assert!(!d.mirror, "never mirror in 3D, even when asked");
     let (_, d) =
-        parse_solution(r#"{"lattice": "square", "mirror": false, "figures": []}"#).unwrap();
+        parse_solution(r#"{"format": "dissection-solution/1", "lattice": "square", "mirror": false, "figures": []}"#).unwrap();
     assert!(!d.mirror);
+}
+
+#[test]
+fn the_format_key_is_required() {
+    assert_eq!(
+        parse_solution(r#"{"lattice": "square", "figures": []}"#),
+        Err(SolutionError::MissingFormat)
+    );
+    let e = SolutionError::MissingFormat.to_string();
+    assert!(e.contains("\"format\": \"dissection-solution/1\""), "{e}");
 }
 
 #[test]
@@ -88,7 +103,8 @@ fn errors() {
         json_error("{\"lattice\": \"square\",\n \"figures\": [{\"pieces\": 7}]}"),
         (2, 25)
     );
-    let e = parse_solution(r#"{"lattice": "square"}"#).unwrap_err();
+    let e =
+        parse_solution(r#"{"format": "dissection-solution/1", "lattice": "square"}"#).unwrap_err();
     assert!(e.to_string().contains("missing field `figures`"), "{e}");
     assert_eq!(
         parse_solution(
@@ -97,7 +113,9 @@ fn errors() {
         Err(SolutionError::WrongFormat("dissection-solution/2".into()))
     );
     assert_eq!(
-        parse_solution(r#"{"lattice": "hexagonal", "figures": []}"#),
+        parse_solution(
+            r#"{"format": "dissection-solution/1", "lattice": "hexagonal", "figures": []}"#
+        ),
         Err(SolutionError::UnknownLattice("hexagonal".into()))
     );
     // Every text here is one line: the bad cell's `[` is found by its text.
@@ -118,28 +136,28 @@ fn errors() {
         );
     };
     bad_cell(
-        r#"{"lattice": "square", "figures": [{"pieces": [[[0,0]]]}, {"pieces": [[[0,0]], [[1,0,0]]]}]}"#,
+        r#"{"format": "dissection-solution/1", "lattice": "square", "figures": [{"pieces": [[[0,0]]]}, {"pieces": [[[0,0]], [[1,0,0]]]}]}"#,
         1,
         1,
         vec![1, 0, 0],
         Square,
     );
     bad_cell(
-        r#"{"lattice": "tri4", "figures": [{"pieces": [[[0,0,4]]]}]}"#,
+        r#"{"format": "dissection-solution/1", "lattice": "tri4", "figures": [{"pieces": [[[0,0,4]]]}]}"#,
         0,
         0,
         vec![0, 0, 4],
         Tri4,
     );
     bad_cell(
-        r#"{"lattice": "cubic", "figures": [{"pieces": [[[0,0]]]}]}"#,
+        r#"{"format": "dissection-solution/1", "lattice": "cubic", "figures": [{"pieces": [[[0,0]]]}]}"#,
         0,
         0,
         vec![0, 0],
         Cubic,
     );
     bad_cell(
-        r#"{"lattice": "square", "figures": [{"pieces": [[[0,3000000000]]]}]}"#,
+        r#"{"format": "dissection-solution/1", "lattice": "square", "figures": [{"pieces": [[[0,3000000000]]]}]}"#,
         0,
         0,
         vec![0, 3_000_000_000],

@@ -395,3 +395,17 @@ fn violation_messages() {
         "figure 0 piece 4 is not connected (3 components)"
     );
 }
+
+#[test]
+fn a_dissection_of_no_figure_is_refused_not_a_panic() {
+    let d = dissect_core::io::Dissection {
+        lattice: dissect_core::LatticeKind::Square,
+        mirror: true,
+        names: vec![],
+        pieces: vec![],
+    };
+    assert_eq!(
+        dissect_core::verify::verify(&d, &[]),
+        Err(vec![Violation::NoPieces])
+    );
+}

@@ -1,0 +1,464 @@
+//! Hostile input (issue 17): every case ends with a clear message and exit
+//! code 1 or 2 (or the documented success) within its time limit, under a
+//! 2 GiB address-space cap, without a panic, an abort or a stack overflow.
+
+use std::time::Duration;
+
+use crate::support::{Run, Sandbox};
+
+const LIMIT: Duration = Duration::from_secs(30);
+
+/// Runs `args` capped and checks exit code 2 (bad input) and the message.
+#[track_caller]
+fn refused(sb: &Sandbox, args: &[&str], says: &[&str]) -> Run {
+    let run = sb.run_capped(args, LIMIT);
+    assert_eq!(
+        run.code,
+        Some(2),
+        "{args:?} should exit 2\n--- stdout\n{}\n--- stderr\n{}",
+        run.stdout,
+        run.stderr
+    );
+    assert!(
+        run.stderr.starts_with("dissect: error: ") || run.stderr.starts_with("error: "),
+        "{}",
+        run.stderr
+    );
+    run.stderr_has(says);
+    run
+}
+
+/// CRC-32 (as PNG uses it).
+fn crc32(data: &[u8]) -> u32 {
+    let mut c = 0xFFFF_FFFFu32;
+    for &b in data {
+        c ^= b as u32;
+        for _ in 0..8 {
+            c = if c & 1 == 1 {
+                0xEDB8_8320 ^ (c >> 1)
+            } else {
+                c >> 1
+            };
+        }
+    }
+    !c
+}
+
+/// A PNG whose header says `w`×`h` pixels, followed by a few bytes of
+/// compressed data: a decoder that trusts the header allocates w·h·4 bytes.
+fn png_claiming(w: u32, h: u32) -> Vec<u8> {
+    let mut out = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut chunk = |kind: &[u8], data: &[u8]| {
+        out.extend_from_slice(&(data.len() as u32).to_be_bytes());
+        let mut body = kind.to_vec();
+        body.extend_from_slice(data);
+        out.extend_from_slice(&body);
+        out.extend_from_slice(&crc32(&body).to_be_bytes());
+    };
+    let mut ihdr = Vec::new();
+    ihdr.extend_from_slice(&w.to_be_bytes());
+    ihdr.extend_from_slice(&h.to_be_bytes());
+    ihdr.extend_from_slice(&[8, 0, 0, 0, 0]);
+    chunk(b"IHDR", &ihdr);
+    // zlib stream of a few zero rows (stored block), then the end.
+    chunk(
+        b"IDAT",
+        &[0x78, 0x01, 0x01, 0x05, 0x00, 0xFA, 0xFF, 0, 0, 0, 0, 0],
+    );
+    chunk(b"IEND", &[]);
+    out
+}
+
+/// A baseline JPEG header (SOF0) saying `w`×`h`, with nothing after it.
+fn jpeg_claiming(w: u16, h: u16) -> Vec<u8> {
+    let mut out = vec![0xFF, 0xD8, 0xFF, 0xC0, 0x00, 0x11, 0x08];
+    out.extend_from_slice(&h.to_be_bytes());
+    out.extend_from_slice(&w.to_be_bytes());
+    out.extend_from_slice(&[3, 1, 0x22, 0, 2, 0x11, 1, 3, 0x11, 1, 0xFF, 0xD9]);
+    out
+}
+
+/// A closed ASCII STL: the unit cube scaled by `s`.
+fn cube_stl(s: f64) -> String {
+    let v = |x: u8, y: u8, z: u8| [x as f64 * s, y as f64 * s, z as f64 * s];
+    let quads = [
+        [v(0, 0, 0), v(0, 1, 0), v(1, 1, 0), v(1, 0, 0)],
+        [v(0, 0, 1), v(1, 0, 1), v(1, 1, 1), v(0, 1, 1)],
+        [v(0, 0, 0), v(1, 0, 0), v(1, 0, 1), v(0, 0, 1)],
+        [v(0, 1, 0), v(0, 1, 1), v(1, 1, 1), v(1, 1, 0)],
+        [v(0, 0, 0), v(0, 0, 1), v(0, 1, 1), v(0, 1, 0)],
+        [v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1)],
+    ];
+    let mut out = String::from("solid cube\n");
+    for q in quads {
+        for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
+            out += "facet normal 0 0 0\nouter loop\n";
+            for p in t {
+                out += &format!("vertex {} {} {}\n", p[0], p[1], p[2]);
+            }
+            out += "endloop\nendfacet\n";
+        }
+    }
+    out + "endsolid cube\n"
+}
+
+const BIG_SVG: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="1e9" height="1e9"><rect width="1e9" height="1e9"/></svg>"#;
+
+#[test]
+fn svg_pictures_with_huge_sizes_or_deep_nesting_are_refused() {
+    let sb = Sandbox::new();
+    let big = sb.write("big.svg", BIG_SVG);
+    assert!(BIG_SVG.len() < 112);
+    refused(&sb, &["rasterize", &big], &["big.svg: too large", "grid"]);
+    // Asked for a cell count, the same picture is drawn small: a success.
+    let run = sb.run_capped(&["rasterize", &big, "--cells", "9"], LIMIT);
+    run.expect_code(0);
+    assert_eq!(run.stdout, "###\n###\n###\n");
+    let n = 50_000;
+    let nested = format!(
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">{}<rect width="5" height="5"/>{}</svg>"#,
+        "<g>".repeat(n),
+        "</g>".repeat(n)
+    );
+    let nested = sb.write("nested.svg", &nested);
+    refused(
+        &sb,
+        &["rasterize", &nested, "--cells", "4"],
+        &["nested.svg: too large: the SVG nests elements more than"],
+    );
+    let small = sb.write(
+        "small.svg",
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><rect width="5" height="5"/></svg>"#,
+    );
+    refused(
+        &sb,
+        &["rasterize", &small, "--scale", "0.000000001"],
+        &["small.svg: too large", "larger scale"],
+    );
+}
+
+#[test]
+fn picture_bombs_are_refused_from_their_header() {
+    let sb = Sandbox::new();
+    let png = sb.write_bytes("bomb.png", &png_claiming(20_000, 20_000));
+    refused(
+        &sb,
+        &["rasterize", &png, "--cells", "10"],
+        &["bomb.png: too large: the picture is 20000x20000 pixels"],
+    );
+    let jpg = sb.write_bytes("bomb.jpg", &jpeg_claiming(20_000, 20_000));
+    refused(&sb, &["rasterize", &jpg, "--cells", "10"], &["bomb.jpg: "]);
+    let wide = sb.write_bytes("wide.png", &png_claiming(1 << 20, 1));
+    refused(&sb, &["rasterize", &wide], &["wide.png: too large"]);
+}
+
+#[test]
+fn meshes_at_tiny_scales_or_huge_counts_are_refused() {
+    let sb = Sandbox::new();
+    let cube = sb.write("cube.stl", &cube_stl(10.0));
+    refused(
+        &sb,
+        &["voxelize", &cube, "--scale", "0.000001"],
+        &["cube.stl: too large", "grid"],
+    );
+    refused(
+        &sb,
+        &["voxelize", &cube, "--cells", "1000000000"],
+        &["cube.stl: --cells must be at most"],
+    );
+    refused(
+        &sb,
+        &["rasterize", "--cells", "1000000000", &cube],
+        &["--cells must be at most"],
+    );
+    // And a plain request still works.
+    sb.run_capped(&["voxelize", &cube, "--cells", "8"], LIMIT)
+        .expect_code(0);
+}
+
+/// A valid solution: two 2x2 squares, 4 single-cell pieces... `n` cells in
+/// a row cut into `n` single cells, in both figures.
+fn monominoes(n: usize) -> String {
+    let cells: Vec<String> = (0..n).map(|x| format!("[[{x},0]]")).collect();
+    format!(
+        r#"{{"format": "dissection-solution/1", "lattice": "square", "figures": [
+            {{"name": "a.txt", "pieces": [{0}]}}, {{"name": "b.txt", "pieces": [{0}]}}]}}"#,
+        cells.join(",")
+    )
+}
+
+#[test]
+fn render_options_that_would_take_terabytes_are_refused() {
+    let sb = Sandbox::new();
+    let sol = sb.write("s.json", &monominoes(4));
+    for px in ["100000", "1e300"] {
+        refused(
+            &sb,
+            &[
+                "render",
+                &sol,
+                "--format",
+                "png",
+                "--cell-px",
+                px,
+                "-o",
+                "out.png",
+            ],
+            &["--cell-px must be more than 0 and at most 1000"],
+        );
+    }
+    refused(
+        &sb,
+        &[
+            "render",
+            &sol,
+            "--format",
+            "png",
+            "--cell-px",
+            "0",
+            "-o",
+            "out.png",
+        ],
+        &["--cell-px", "must be more than 0"],
+    );
+    assert!(!sb.path("out.png").exists());
+}
+
+#[test]
+fn endless_or_huge_inputs_are_refused_without_reading_them_whole() {
+    let sb = Sandbox::new();
+    for dev in ["/dev/zero", "/dev/urandom"] {
+        refused(&sb, &["info", dev], &[dev, "too large"]);
+        refused(
+            &sb,
+            &["verify", "--solution", dev, dev],
+            &[dev, "too large"],
+        );
+        refused(&sb, &["rasterize", dev], &[dev, "too large"]);
+        refused(&sb, &["voxelize", dev], &[dev, "too large"]);
+        refused(&sb, &["render", dev, "-o", "x.svg"], &[dev, "too large"]);
+    }
+    refused(&sb, &["info", "."], &["it is a folder"]);
+    // A figure file over 1 MiB (a 4-million-triangle tri4 figure would be
+    // a quarter of it).
+    let big = sb.write("big.txt", &("F".repeat(1023) + "\n").repeat(1025));
+    refused(
+        &sb,
+        &["info", "--lattice", "tri4", &big],
+        &["big.txt: too large", "1 MiB"],
+    );
+}
+
+#[test]
+fn negative_numbers_are_told_their_range() {
+    let sb = Sandbox::new();
+    let a = sb.write("a.txt", "##\n");
+    for args in [
+        vec!["solve", "--seed", "-1", &a, &a],
+        vec!["solve", "--keep", "-3", &a, &a],
+        vec!["rasterize", "--cells", "-5", &a],
+        vec!["bound", "--max-pieces", "-2", &a, &a],
+        vec!["serve", "--port", "-1"],
+    ] {
+        let run = refused(&sb, &args, &["must be"]);
+        assert!(
+            !run.stderr.contains("-- -"),
+            "misleading hint: {}",
+            run.stderr
+        );
+    }
+    refused(
+        &sb,
+        &["render", "s.json", "--cell-mm", "-1", "-o", "x"],
+        &["--cell-mm", "must be more than 0"],
+    );
+    refused(
+        &sb,
+        &["serve", "--port", "70000"],
+        &["port from 0 to 65535"],
+    );
+}
+
+#[test]
+fn solutions_without_format_or_not_a_dissection_are_not_drawn() {
+    let sb = Sandbox::new();
+    let good = monominoes(3);
+    let no_format = good.replace(r#""format": "dissection-solution/1", "#, "");
+    let nf = sb.write("nf.json", &no_format);
+    for cmd in [
+        vec!["render", &nf, "-o", "x.svg"],
+        vec!["verify", "--solution", &nf, "a.txt", "b.txt"],
+    ] {
+        refused(&sb, &cmd, &["nf.json", "no \"format\" key"]);
+    }
+    // Overlapping pieces, no figures given: the solution is checked against
+    // the figures its own pieces make.
+    let overlap = r#"{"format": "dissection-solution/1", "lattice": "square", "figures": [
+        {"pieces": [[[0,0],[1,0]], [[1,0],[2,0]]]}, {"pieces": [[[0,0],[1,0]], [[1,0],[2,0]]]}]}"#;
+    let o = sb.write("o.json", overlap);
+    refused(
+        &sb,
+        &["render", &o, "-o", "x.svg"],
+        &["o.json: not a valid dissection"],
+    );
+    // Pieces that are not congruent.
+    let wrong = r#"{"format": "dissection-solution/1", "lattice": "square", "figures": [
+        {"pieces": [[[0,0],[1,0]], [[2,0],[3,0]]]}, {"pieces": [[[0,0],[0,1]], [[1,0]]]}]}"#;
+    let w = sb.write("w.json", wrong);
+    refused(
+        &sb,
+        &["render", &w, "-o", "x.svg"],
+        &["w.json: not a valid dissection"],
+    );
+    assert!(!sb.path("x.svg").exists());
+    let ok = sb.write("ok.json", &good);
+    sb.run_capped(&["render", &ok, "-o", "x.svg"], LIMIT)
+        .expect_code(0);
+    assert!(sb.path("x.svg").is_file());
+}
+
+#[test]
+fn seventy_pieces_make_seventy_stl_files_also_without_case() {
+    let sb = Sandbox::new();
+    let sol = sb.write("s.json", &monominoes(70));
+    sb.run_capped(&["render", &sol, "--format", "stl", "-o", "stl"], LIMIT)
+        .expect_code(0);
+    let names: Vec<String> = std::fs::read_dir(sb.path("stl"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names.len(), 70, "{names:?}");
+    let folded: std::collections::HashSet<String> =
+        names.iter().map(|n| n.to_ascii_lowercase()).collect();
+    assert_eq!(folded.len(), 70, "names differ only in case: {names:?}");
+    assert!(names.contains(&"piece-01-A.stl".to_string()), "{names:?}");
+    assert!(names.contains(&"piece-27-a.stl".to_string()), "{names:?}");
+    assert!(names.contains(&"piece-70.stl".to_string()), "{names:?}");
+}
+
+#[test]
+fn render_creates_no_folder_but_the_last_one() {
+    let sb = Sandbox::new();
+    let sol = sb.write("s.json", &monominoes(2));
+    let fig = sb.write("a.txt", "##\n");
+    refused(
+        &sb,
+        &[
+            "render",
+            &sol,
+            "--format",
+            "stl",
+            "-o",
+            "missing/deeper/out",
+        ],
+        &[
+            "missing/deeper/out",
+            "missing/deeper is not an existing folder",
+        ],
+    );
+    assert!(!sb.path("missing").exists());
+    refused(
+        &sb,
+        &["render", &sol, "-o", "missing/x.svg"],
+        &["missing/x.svg", "does not exist"],
+    );
+    assert!(!sb.path("missing").exists());
+    // Inside a figure file's path (a typo): nothing is created.
+    refused(
+        &sb,
+        &[
+            "render",
+            &sol,
+            "--figures",
+            &fig,
+            &fig,
+            "--format",
+            "stl",
+            "-o",
+            "a.txt/out",
+        ],
+        &["a.txt/out"],
+    );
+    assert_eq!(sb.read("a.txt"), "##\n");
+    // The documented case: the output folder itself is created.
+    sb.run_capped(&["render", &sol, "--format", "stl", "-o", "new"], LIMIT)
+        .expect_code(0);
+    assert!(sb.path("new/piece-01-A.stl").is_file());
+}
+
+#[test]
+fn outputs_are_replaced_whole_and_kept_on_failure() {
+    let sb = Sandbox::new();
+    let svg = sb.write(
+        "p.svg",
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="20" height="20"><rect width="20" height="20"/></svg>"#,
+    );
+    sb.write("fig.txt", "old\n");
+    sb.run_capped(&["rasterize", &svg, "--cells", "4", "-o", "fig.txt"], LIMIT)
+        .expect_code(0);
+    assert_eq!(sb.read("fig.txt"), "##\n##\n");
+    // A failing run leaves the earlier output as it was.
+    sb.run_capped(
+        &["rasterize", &svg, "--scale", "1e-9", "-o", "fig.txt"],
+        LIMIT,
+    )
+    .expect_code(2);
+    assert_eq!(sb.read("fig.txt"), "##\n##\n");
+    let left: Vec<String> = std::fs::read_dir(sb.path("."))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
+    assert!(left.is_empty(), "temporary files left: {left:?}");
+}
+
+#[test]
+fn serve_beyond_loopback_prints_a_token_and_stops_at_once_on_sigterm() {
+    use std::io::{Read, Write};
+    let sb = Sandbox::new();
+    let mut server = sb.spawn_until_first_line(&["serve", "--host", "0.0.0.0", "--port", "0"]);
+    let url = server.stdout_line();
+    let (addr, token) = url
+        .strip_prefix("http://")
+        .and_then(|u| u.split_once("/?token="))
+        .unwrap_or_else(|| panic!("no token in {url:?}"));
+    assert_eq!(token.len(), 32, "{url}");
+    let port = addr.rsplit(':').next().unwrap();
+    let local = format!("127.0.0.1:{port}");
+    // Without the token: 401.
+    let mut c = std::net::TcpStream::connect(&local).unwrap();
+    c.write_all(format!("GET /api/info HTTP/1.0\r\nhost: {local}\r\n\r\n").as_bytes())
+        .unwrap();
+    let mut answer = String::new();
+    c.read_to_string(&mut answer).unwrap();
+    assert!(answer.starts_with("HTTP/1.0 401"), "{answer}");
+    // With it: 200.
+    let mut c = std::net::TcpStream::connect(&local).unwrap();
+    c.write_all(
+        format!("GET /api/info HTTP/1.0\r\nhost: {local}\r\nauthorization: Bearer {token}\r\n\r\n")
+            .as_bytes(),
+    )
+    .unwrap();
+    let mut answer = String::new();
+    c.read_to_string(&mut answer).unwrap();
+    assert!(answer.starts_with("HTTP/1.0 200"), "{answer}");
+    // A client holding a half-sent request does not delay the stop.
+    let mut half = std::net::TcpStream::connect(&local).unwrap();
+    half.write_all(b"POST /api/solve HTTP/1.1\r\nhost: 127")
+        .unwrap();
+    std::thread::sleep(Duration::from_millis(200));
+    server.signal("TERM");
+    let run = server.wait(Duration::from_secs(8));
+    assert!(run.code.is_some(), "{}", run.stderr);
+    run.stderr_has(&["reachable from the network", "access token"]);
+}
+
+#[test]
+fn a_bad_token_is_refused() {
+    let sb = Sandbox::new();
+    refused(
+        &sb,
+        &["serve", "--port", "0", "--token", "short"],
+        &["--token", "16 to 256"],
+    );
+}

@@ -1,0 +1,403 @@
+//! Hostile requests (issue 17): the server answers every one with a JSON
+//! error and keeps serving; other sites cannot drive it; slow or stuck
+//! clients cannot hold it open.
+
+use std::time::{Duration, Instant};
+
+use axum::body::Body;
+use axum::http::{Request, StatusCode};
+use axum::Router;
+use dissect_web::{router, router_with_access, Access, Limits};
+use http_body_util::BodyExt;
+use serde_json::{json, Value};
+use tokio::io::{AsyncReadExt, AsyncWriteExt};
+use tower::ServiceExt;
+
+fn app() -> Router {
+    router(Limits::new(200, 64, 4, 1, 60.0, 1))
+}
+
+async fn send(app: &Router, req: Request<Body>) -> (StatusCode, axum::http::HeaderMap, Vec<u8>) {
+    let res = app.clone().oneshot(req).await.unwrap();
+    let status = res.status();
+    let headers = res.headers().clone();
+    let bytes = res.into_body().collect().await.unwrap().to_bytes().to_vec();
+    (status, headers, bytes)
+}
+
+fn code(body: &[u8]) -> String {
+    let v: Value = serde_json::from_slice(body)
+        .unwrap_or_else(|_| panic!("not JSON: {}", String::from_utf8_lossy(body)));
+    v["error"]["code"].as_str().unwrap_or("").to_string()
+}
+
+const FIGURES: &str = r##"{"lattice": "square", "figures": [{"text": "#"}]}"##;
+const SOLUTION: &str = r#"{"format": "dissection-solution/1", "lattice": "square",
+  "figures": [{"pieces": [[[0,0],[1,0]], [[0,1],[1,1]]]}, {"pieces": [[[0,0],[1,0]], [[2,0],[3,0]]]}]}"#;
+
+#[tokio::test]
+async fn json_routes_need_exactly_application_json() {
+    let app = app();
+    let solve =
+        json!({"lattice": "square", "figures": [{"text": "##"}, {"text": "#\n#"}]}).to_string();
+    let export =
+        json!({ "solution": serde_json::from_str::<Value>(SOLUTION).unwrap() }).to_string();
+    for (path, body) in [
+        ("/api/figures", FIGURES.to_string()),
+        ("/api/solve", solve),
+        ("/api/export/svg", export.clone()),
+    ] {
+        for ty in [
+            None,
+            Some("application/jsonx"),
+            Some("text/plain"),
+            Some("application/json-seq"),
+        ] {
+            let mut req = Request::post(path);
+            if let Some(ty) = ty {
+                req = req.header("content-type", ty);
+            }
+            let (s, _, b) = send(&app, req.body(Body::from(body.clone())).unwrap()).await;
+            assert_eq!(s, StatusCode::UNSUPPORTED_MEDIA_TYPE, "{path} {ty:?}");
+            assert_eq!(code(&b), "unsupported_media_type");
+        }
+    }
+    let req = Request::post("/api/export/svg")
+        .header("content-type", "Application/JSON; charset=utf-8")
+        .body(Body::from(export))
+        .unwrap();
+    let (s, _, _) = send(&app, req).await;
+    assert_eq!(s, StatusCode::OK);
+}
+
+fn picture(ty: &str, origin: Option<&str>, site: Option<&str>, body: &[u8]) -> Request<Body> {
+    let mut req = Request::post("/api/rasterize?lattice=square&cells=4")
+        .header("host", "127.0.0.1:7878")
+        .header("content-type", ty);
+    if let Some(o) = origin {
+        req = req.header("origin", o);
+    }
+    if let Some(s) = site {
+        req = req.header("sec-fetch-site", s);
+    }
+    req.body(Body::from(body.to_vec())).unwrap()
+}
+
+const SQUARE_SVG: &[u8] =
+    br#"<svg xmlns="http://www.w3.org/2000/svg" width="20" height="20"><rect width="20" height="20"/></svg>"#;
+
+#[tokio::test]
+async fn other_sites_cannot_rasterize() {
+    let app = app();
+    let ok = send(
+        &app,
+        picture(
+            "image/svg+xml",
+            Some("http://127.0.0.1:7878"),
+            Some("same-origin"),
+            SQUARE_SVG,
+        ),
+    )
+    .await;
+    assert_eq!(ok.0, StatusCode::OK, "{}", String::from_utf8_lossy(&ok.2));
+    // Scripts (no Origin) are fine too.
+    assert_eq!(
+        send(
+            &app,
+            picture("application/octet-stream", None, None, SQUARE_SVG)
+        )
+        .await
+        .0,
+        StatusCode::OK
+    );
+    for (ty, origin, site, want) in [
+        (
+            "image/svg+xml",
+            Some("http://evil.example"),
+            None,
+            StatusCode::FORBIDDEN,
+        ),
+        ("image/svg+xml", Some("null"), None, StatusCode::FORBIDDEN),
+        (
+            "image/svg+xml",
+            None,
+            Some("cross-site"),
+            StatusCode::FORBIDDEN,
+        ),
+        ("text/plain", None, None, StatusCode::UNSUPPORTED_MEDIA_TYPE),
+        (
+            "multipart/form-data; boundary=x",
+            None,
+            None,
+            StatusCode::UNSUPPORTED_MEDIA_TYPE,
+        ),
+        (
+            "application/x-www-form-urlencoded",
+            None,
+            None,
+            StatusCode::UNSUPPORTED_MEDIA_TYPE,
+        ),
+    ] {
+        let (s, _, b) = send(&app, picture(ty, origin, site, SQUARE_SVG)).await;
+        assert_eq!(
+            s,
+            want,
+            "{ty} {origin:?} {site:?}: {}",
+            String::from_utf8_lossy(&b)
+        );
+    }
+    // The same Origin check guards the JSON routes.
+    let req = Request::post("/api/figures")
+        .header("host", "localhost:7878")
+        .header("origin", "http://evil.example")
+        .header("content-type", "application/json")
+        .body(Body::from(FIGURES))
+        .unwrap();
+    assert_eq!(send(&app, req).await.0, StatusCode::FORBIDDEN);
+}
+
+/// CRC-32 (as PNG uses it).
+fn crc32(data: &[u8]) -> u32 {
+    let mut c = 0xFFFF_FFFFu32;
+    for &b in data {
+        c ^= b as u32;
+        for _ in 0..8 {
+            c = if c & 1 == 1 {
+                0xEDB8_8320 ^ (c >> 1)
+            } else {
+                c >> 1
+            };
+        }
+    }
+    !c
+}
+
+fn png_claiming(w: u32, h: u32) -> Vec<u8> {
+    let mut out = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut chunk = |kind: &[u8], data: &[u8]| {
+        out.extend_from_slice(&(data.len() as u32).to_be_bytes());
+        let mut body = kind.to_vec();
+        body.extend_from_slice(data);
+        out.extend_from_slice(&body);
+        out.extend_from_slice(&crc32(&body).to_be_bytes());
+    };
+    let mut ihdr = Vec::new();
+    ihdr.extend_from_slice(&w.to_be_bytes());
+    ihdr.extend_from_slice(&h.to_be_bytes());
+    ihdr.extend_from_slice(&[8, 0, 0, 0, 0]);
+    chunk(b"IHDR", &ihdr);
+    chunk(
+        b"IDAT",
+        &[0x78, 0x01, 0x01, 0x05, 0x00, 0xFA, 0xFF, 0, 0, 0, 0, 0],
+    );
+    chunk(b"IEND", &[]);
+    out
+}
+
+#[tokio::test]
+async fn picture_bombs_get_413_and_the_server_keeps_serving() {
+    let app = app();
+    let big = br#"<svg xmlns="http://www.w3.org/2000/svg" width="1e9" height="1e9"><rect width="1e9" height="1e9"/></svg>"#;
+    let nested = format!(
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">{}<rect width="5" height="5"/>{}</svg>"#,
+        "<g>".repeat(50_000),
+        "</g>".repeat(50_000)
+    );
+    // The 1e9 SVG is drawn small: 4 cells of it are fine.
+    let (s, _, b) = send(&app, picture("image/svg+xml", None, None, big)).await;
+    assert_eq!(s, StatusCode::OK, "{}", String::from_utf8_lossy(&b));
+    for (body, says) in [
+        (nested.into_bytes(), "nests elements"),
+        (png_claiming(20_000, 20_000), "20000x20000"),
+    ] {
+        let (s, _, b) = send(&app, picture("application/octet-stream", None, None, &body)).await;
+        assert_eq!(
+            s,
+            StatusCode::PAYLOAD_TOO_LARGE,
+            "{}",
+            String::from_utf8_lossy(&b)
+        );
+        assert_eq!(code(&b), "too_large");
+        assert!(String::from_utf8_lossy(&b).contains(says));
+    }
+    let (s, _, _) = send(&app, Request::get("/api/info").body(Body::empty()).unwrap()).await;
+    assert_eq!(s, StatusCode::OK);
+}
+
+#[tokio::test]
+async fn a_seventy_piece_stl_download_is_a_zip_of_seventy_files() {
+    let app = router(Limits::new(200, 100, 4, 1, 60.0, 1));
+    let cells: Vec<Value> = (0..70).map(|x| json!([[x, 0]])).collect();
+    let sol = json!({"format": "dissection-solution/1", "lattice": "square",
+        "figures": [{"pieces": cells}, {"pieces": cells}]});
+    let req = Request::post("/api/export/stl")
+        .header("content-type", "application/json")
+        .body(Body::from(json!({ "solution": sol }).to_string()))
+        .unwrap();
+    let (s, _, zip) = send(&app, req).await;
+    assert_eq!(s, StatusCode::OK, "{}", String::from_utf8_lossy(&zip));
+    let text = String::from_utf8_lossy(&zip);
+    for name in [
+        "piece-01-A.stl",
+        "piece-27-a.stl",
+        "piece-63.stl",
+        "piece-70.stl",
+    ] {
+        assert!(text.contains(name), "{name} missing");
+    }
+}
+
+#[tokio::test]
+async fn every_answer_has_a_content_security_policy_and_may_not_be_framed() {
+    let app = app();
+    for path in ["/", "/studio.js", "/api/info", "/nothing"] {
+        let (_, h, _) = send(&app, Request::get(path).body(Body::empty()).unwrap()).await;
+        let csp = h["content-security-policy"].to_str().unwrap();
+        assert!(csp.contains("script-src 'self' 'sha256-"), "{path}: {csp}");
+        assert!(csp.contains("frame-ancestors 'none'"), "{path}: {csp}");
+        assert_eq!(h["x-frame-options"], "DENY", "{path}");
+        assert_eq!(h["x-content-type-options"], "nosniff", "{path}");
+    }
+}
+
+#[tokio::test]
+async fn with_a_token_every_request_needs_it() {
+    let token = "0123456789abcdef0123";
+    let app = router_with_access(
+        Limits::new(200, 64, 4, 1, 60.0, 1),
+        Access::with_token(token).unwrap(),
+    );
+    let get = |uri: &str, header: Option<(&str, String)>| {
+        let mut r = Request::get(uri).header("host", "192.168.1.5:7878");
+        if let Some((k, v)) = header {
+            r = r.header(k, v);
+        }
+        r.body(Body::empty()).unwrap()
+    };
+    let (s, _, b) = send(&app, get("/api/info", None)).await;
+    assert_eq!(
+        (s, code(&b).as_str()),
+        (StatusCode::UNAUTHORIZED, "unauthorized")
+    );
+    let (s, _, _) = send(&app, get("/", None)).await;
+    assert_eq!(s, StatusCode::UNAUTHORIZED);
+    let (s, _, _) = send(
+        &app,
+        get(
+            "/api/info",
+            Some(("authorization", "Bearer wrong-token-wrong-token".into())),
+        ),
+    )
+    .await;
+    assert_eq!(s, StatusCode::UNAUTHORIZED);
+    let (s, _, _) = send(
+        &app,
+        get(
+            "/api/info",
+            Some(("authorization", format!("Bearer {token}"))),
+        ),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK);
+    // The printed URL sets the cookie the page's own requests then carry.
+    let (s, h, _) = send(&app, get(&format!("/?token={token}"), None)).await;
+    assert_eq!(s, StatusCode::OK);
+    let cookie = h["set-cookie"].to_str().unwrap();
+    assert!(
+        cookie.starts_with(&format!("dissect_token={token}")),
+        "{cookie}"
+    );
+    assert!(
+        cookie.contains("HttpOnly") && cookie.contains("SameSite=Strict"),
+        "{cookie}"
+    );
+    let (s, _, _) = send(
+        &app,
+        get(
+            "/api/info",
+            Some(("cookie", format!("a=b; dissect_token={token}"))),
+        ),
+    )
+    .await;
+    assert_eq!(s, StatusCode::OK);
+}
+
+async fn start(
+    header: Duration,
+    idle: Duration,
+) -> (
+    std::net::SocketAddr,
+    tokio::sync::oneshot::Sender<()>,
+    tokio::task::JoinHandle<Result<(), dissect_web::ServeError>>,
+) {
+    let server = dissect_web::Server::bind(
+        "127.0.0.1:0".parse().unwrap(),
+        Limits::new(200, 64, 4, 1, 60.0, 1),
+    )
+    .await
+    .unwrap()
+    .with_timeouts(header, idle);
+    let addr = server.local_addr().unwrap();
+    let (tx, rx) = tokio::sync::oneshot::channel::<()>();
+    let handle = tokio::spawn(server.run(async {
+        let _ = rx.await;
+    }));
+    (addr, tx, handle)
+}
+
+/// Reads until the server closes the connection; the time it took.
+async fn closed_after(s: &mut tokio::net::TcpStream, within: Duration) -> Duration {
+    let t = Instant::now();
+    let mut buf = Vec::new();
+    tokio::time::timeout(within, s.read_to_end(&mut buf))
+        .await
+        .expect("the server closes the connection")
+        .ok();
+    t.elapsed()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn slow_and_idle_clients_are_cut_off() {
+    let (addr, tx, handle) = start(Duration::from_millis(500), Duration::from_secs(1)).await;
+    // Half a request, then nothing.
+    let mut half = tokio::net::TcpStream::connect(addr).await.unwrap();
+    half.write_all(b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\n")
+        .await
+        .unwrap();
+    assert!(closed_after(&mut half, Duration::from_secs(10)).await < Duration::from_secs(5));
+    // A keep-alive connection after its answer, idle.
+    let mut idle = tokio::net::TcpStream::connect(addr).await.unwrap();
+    idle.write_all(b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\n\r\n")
+        .await
+        .unwrap();
+    assert!(closed_after(&mut idle, Duration::from_secs(10)).await < Duration::from_secs(5));
+    // A connection that sends nothing at all.
+    let mut silent = tokio::net::TcpStream::connect(addr).await.unwrap();
+    assert!(closed_after(&mut silent, Duration::from_secs(10)).await < Duration::from_secs(5));
+    let _ = tx.send(());
+    handle.await.unwrap().unwrap();
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn shutdown_is_quick_whatever_clients_do() {
+    // Long timeouts: only the shutdown may end these connections.
+    let (addr, tx, handle) = start(Duration::from_secs(600), Duration::from_secs(600)).await;
+    let mut half = tokio::net::TcpStream::connect(addr).await.unwrap();
+    half.write_all(b"POST /api/figures HTTP/1.1\r\nhost: 127.0.0.1\r\ncontent-type: application/json\r\ncontent-length: 1000\r\n\r\n{\"lat").await.unwrap();
+    let mut headers = tokio::net::TcpStream::connect(addr).await.unwrap();
+    headers
+        .write_all(b"GET / HTTP/1.1\r\nhost: 12")
+        .await
+        .unwrap();
+    tokio::time::sleep(Duration::from_millis(200)).await;
+    let t = Instant::now();
+    let _ = tx.send(());
+    tokio::time::timeout(Duration::from_secs(10), handle)
+        .await
+        .expect("the server stops")
+        .unwrap()
+        .unwrap();
+    assert!(t.elapsed() < Duration::from_secs(5), "{:?}", t.elapsed());
+    // And nobody is listening any more.
+    assert!(tokio::net::TcpStream::connect(addr).await.is_err());
+}
