@@ -9,12 +9,14 @@
 //! trait ([`geometry::Motions`]), so it works on every lattice.
 
 pub mod assemblies;
+pub mod collect;
 pub mod constraints;
 pub mod dlx;
 pub mod geometry;
 pub mod scores;
 
 pub use assemblies::{count, report_line, AssemblyError, Count, CountLimits, PieceSet};
+pub use collect::{Added, Collection, Entry};
 pub use constraints::{ConstraintError, Constraints, KeepRegions};
 pub use geometry::Motions;
 pub use scores::{Rank, Scores};

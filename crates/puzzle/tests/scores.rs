@@ -104,3 +104,32 @@ fn each_rank_picks_its_own_best() {
         .to_string()
         .contains("expected variance"));
 }
+
+#[test]
+fn a_collection_keeps_distinct_dissections_with_the_fewest_pieces() {
+    use dissect_puzzle::{Added, Collection, Constraints};
+    let m = Motions::new(LatticeKind::Square, true);
+    // A 1x4 bar and a 2x2 square.
+    let two = vec![
+        vec![sq(&[(0, 0), (1, 0)]), sq(&[(2, 0), (3, 0)])],
+        vec![sq(&[(0, 0), (1, 0)]), sq(&[(0, 1), (1, 1)])],
+    ];
+    let two_swapped = vec![
+        vec![sq(&[(2, 0), (3, 0)]), sq(&[(0, 0), (1, 0)])],
+        vec![sq(&[(0, 0), (0, 1)]), sq(&[(1, 0), (1, 1)])],
+    ];
+    let three = vec![
+        vec![sq(&[(0, 0)]), sq(&[(1, 0)]), sq(&[(2, 0), (3, 0)])],
+        vec![sq(&[(0, 0)]), sq(&[(1, 0)]), sq(&[(0, 1), (1, 1)])],
+    ];
+    let mut c = Collection::new(m.clone(), Constraints::none());
+    assert_eq!(c.add(three.clone()), Added::Fewer);
+    assert_eq!(c.add(two.clone()), Added::Fewer);
+    assert_eq!(c.add(two_swapped), Added::Duplicate);
+    assert_eq!(c.add(three.clone()), Added::MorePieces);
+    assert_eq!(c.len(), 1);
+    // With a smallest piece of 2 cells the 3-piece cut is refused.
+    let mut c = Collection::new(m, Constraints::none().with_sizes(Some(2), None));
+    assert!(matches!(c.add(three), Added::Broken(v) if v.len() == 2));
+    assert!(c.is_empty());
+}
