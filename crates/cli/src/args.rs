@@ -38,6 +38,8 @@ pub enum Command {
     /// Turn a closed STL mesh into a cubic figure with an exact cube count.
     #[cfg(feature = "render")]
     Voxelize(crate::render::VoxelizeArgs),
+    /// Count the ways a solution's pieces tile each figure (and say when it is unique).
+    Assemblies(crate::assemblies::AssembliesArgs),
 }
 
 /// A thread count from 0 (one per core) to 256.

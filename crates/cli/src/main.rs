@@ -1,6 +1,7 @@
 //! `dissect`: designs geometric dissection puzzles on lattices.
 
 mod args;
+mod assemblies;
 mod info;
 mod input;
 mod output;
@@ -50,6 +51,7 @@ fn main() -> ExitCode {
         args::Command::Rasterize(a) => render::rasterize(a),
         #[cfg(feature = "render")]
         args::Command::Voxelize(a) => render::voxelize(a),
+        args::Command::Assemblies(a) => assemblies::run(a),
     };
     match result {
         Ok(Status::Ok) => ExitCode::SUCCESS,

@@ -10,6 +10,8 @@ mod support;
 
 #[path = "cli/anytime.rs"]
 mod anytime;
+#[path = "cli/assemblies.rs"]
+mod assemblies;
 #[path = "cli/bad_input.rs"]
 mod bad_input;
 #[path = "cli/display.rs"]

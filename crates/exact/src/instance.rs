@@ -86,6 +86,10 @@ pub(crate) struct Instance {
     pub modulus: i32,
     pub shapes: Vec<Shape>,
     pub order: Vec<usize>,
+    /// Whether the search may take the first piece's motion into a target
+    /// up to the target's symmetries (false under constraints those
+    /// symmetries would break).
+    pub target_symmetries: bool,
 }
 
 impl Instance {
@@ -108,6 +112,7 @@ impl Instance {
                 .map(|&i| Shape::new(lattice, &figures[i]))
                 .collect(),
             order,
+            target_symmetries: true,
         }
     }
 

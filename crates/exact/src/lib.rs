@@ -25,6 +25,7 @@
 pub mod bound;
 pub(crate) mod component_count;
 pub(crate) mod connectivity_cut;
+pub(crate) mod constraint_encoding;
 pub(crate) mod incompatible_clique;
 pub(crate) mod instance;
 pub mod motion;

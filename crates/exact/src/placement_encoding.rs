@@ -266,6 +266,7 @@ pub(crate) fn encode(
         let group: Vec<usize> = self_symmetries(inst, f)
             .into_iter()
             .filter(|&h| set.admits(h, inst.syms[h].determinant()))
+            .filter(|&h| inst.target_symmetries || h == 0)
             .collect();
         let reps = coset_representatives(inst, &group);
         let target = &shapes[f];

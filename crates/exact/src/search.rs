@@ -61,6 +61,9 @@ pub struct ExactOptions {
     /// bytes: the search ends as inconclusive ([`Limit::TooLarge`]) instead
     /// of exhausting the machine.
     pub max_encoding_bytes: u64,
+    /// The designer's constraints every dissection found must honour
+    /// (`None`: none). Lower bounds are then bounds under the constraints.
+    pub constraints: Option<dissect_puzzle::Constraints>,
 }
 
 /// The default of [`ExactOptions::max_encoding_bytes`]: 512 MiB.
@@ -95,6 +98,7 @@ impl Default for ExactOptions {
             conflict_budget: None,
             restricted_conflicts: None,
             max_encoding_bytes: DEFAULT_MAX_ENCODING_BYTES,
+            constraints: None,
         }
     }
 }
@@ -215,6 +219,7 @@ struct Context<'a> {
     cuts_per_piece: usize,
     eager_connectivity: bool,
     max_bytes: u64,
+    constraints: Option<&'a dissect_puzzle::Constraints>,
     /// Conflicts spent so far.
     spent: std::cell::Cell<u64>,
 }
@@ -257,6 +262,9 @@ impl Context<'_> {
         ) else {
             return Pass::Unknown;
         };
+        if let Some(c) = self.constraints {
+            crate::constraint_encoding::add(self.inst, &mut sat, &enc, c);
+        }
         self.observer.on_event(&ExactEvent::Encoded {
             pieces: k,
             motions: set,
@@ -363,10 +371,14 @@ pub fn search(
         limit: None,
         conflicts: 0,
     };
-    let Some((inst, clique, incompat)) = model_inputs(figures, options.mirror, &mut cheap) else {
+    let Some((mut inst, clique, incompat)) = model_inputs(figures, options.mirror, &mut cheap)
+    else {
         outcome.stopped = true;
         return Ok(outcome);
     };
+    if let Some(c) = &options.constraints {
+        inst.target_symmetries = !crate::constraint_encoding::needs_all_target_motions(c);
+    }
     let ctx = Context {
         inst: &inst,
         clique: &clique,
@@ -377,6 +389,7 @@ pub fn search(
         cuts_per_piece: options.cuts_per_piece.max(1),
         eager_connectivity: options.eager_connectivity,
         max_bytes: options.max_encoding_bytes,
+        constraints: options.constraints.as_ref(),
         spent: std::cell::Cell::new(0),
     };
     let left = || {
