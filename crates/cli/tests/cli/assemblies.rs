@@ -97,7 +97,7 @@ fn assemblies_time_limit_reports_a_lower_bound() {
     sb.write(
         "d.json",
         &format!(
-            r#"{{"lattice": "square", "figures": [{{"name": "sq.txt", "pieces": [{}]}}]}}"#,
+            r#"{{"format": "dissection-solution/1", "lattice": "square", "figures": [{{"name": "sq.txt", "pieces": [{}]}}]}}"#,
             pieces.join(",")
         ),
     );

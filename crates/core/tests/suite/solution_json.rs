@@ -164,7 +164,7 @@ fn errors() {
         Square,
     );
     bad_cell(
-        r#"{"lattice": "hex", "figures": [{"pieces": [[[0,0], [1,0,0]]]}]}"#,
+        r#"{"format": "dissection-solution/1", "lattice": "hex", "figures": [{"pieces": [[[0,0], [1,0,0]]]}]}"#,
         0,
         0,
         vec![1, 0, 0],
@@ -175,11 +175,11 @@ fn errors() {
 /// A bad cell's error names its line and column, and the lattice's cell form.
 #[test]
 fn a_bad_cell_is_located_on_its_line() {
-    let text = "{\n  \"lattice\": \"tri4\",\n  \"figures\": [\n    {\"pieces\": [[[0, 0, 1],\n      [2, 0, 7]]]}\n  ]\n}\n";
+    let text = "{\n  \"format\": \"dissection-solution/1\",\n  \"lattice\": \"tri4\",\n  \"figures\": [\n    {\"pieces\": [[[0, 0, 1],\n      [2, 0, 7]]]}\n  ]\n}\n";
     let e = parse_solution(text).expect_err("t = 7 is not a tri4 triangle");
     assert_eq!(
         e.to_string(),
-        "line 5, column 7: figure 0 piece 0: bad cell [2, 0, 7] for the tri4 lattice (a tri4 cell is [x, y, t] with t in 0..=3)"
+        "line 6, column 7: figure 0 piece 0: bad cell [2, 0, 7] for the tri4 lattice (a tri4 cell is [x, y, t] with t in 0..=3)"
     );
 }
 
