@@ -5,7 +5,7 @@
 //!   ([`RunOptions::new`] from a plain [`RunConfig`], [`OptionsError`]).
 //! * [`run`]: the time limit and the stop flag (the only deadline of the
 //!   workspace), the anytime heuristic ([`dissect_core::solver::solve_anytime`])
-//!   and the exact lower-bound search ([`dissect_exact::search`]) side by
+//!   and the exact lower-bound search ([`dissect_exact::search()`]) side by
 //!   side with shared bounds, ending as soon as the best dissection meets
 //!   the lower bound (`optimal`), the repair of near misses, and the
 //!   [`Report`].

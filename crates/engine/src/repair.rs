@@ -8,7 +8,7 @@ use dissect_core::solver::Repair;
 use dissect_core::{Cell, Figure};
 use dissect_exact::{repair, RepairOptions};
 
-/// [`Repair`] by [`dissect_exact::repair`] with a deterministic budget (SAT
+/// [`Repair`] by [`dissect_exact::repair()`] with a deterministic budget (SAT
 /// conflicts); a deadline only when the run has a time limit.
 pub struct ExactRepair<'a> {
     figures: &'a [Figure],

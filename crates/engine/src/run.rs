@@ -199,7 +199,7 @@ impl ExactObserver for Shared<'_> {
 /// time limit, when `stop` is raised, or when both sides ended by their
 /// work rules: the heuristic after [`RunConfig::idle_rounds`](crate::RunConfig)
 /// rounds without improvement (or the paper's first valid level), the
-/// exact side after [`EXACT_BUDGET`] SAT conflicts (no time limit) or
+/// exact side after `EXACT_BUDGET` SAT conflicts (no time limit) or
 /// when its bound meets the best dissection.
 /// The answer is the dissection with the fewest pieces; on a tie the
 /// heuristic's, so that without a time limit the same seed gives the same

@@ -265,7 +265,7 @@ fn refuse(access: &Access, req: &axum::extract::Request) -> Option<ApiError> {
     None
 }
 
-/// The middleware: refuses what [`refuse`] refuses, and adds the security
+/// The middleware: refuses what `refuse` refuses, and adds the security
 /// headers (and the token cookie) to every answer.
 pub async fn guard(
     axum::extract::State(access): axum::extract::State<std::sync::Arc<Access>>,
