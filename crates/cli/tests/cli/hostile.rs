@@ -462,3 +462,55 @@ fn a_bad_token_is_refused() {
         &["--token", "16 to 256"],
     );
 }
+
+/// Solver options out of range are refused by the engine's one validation
+/// (never a capacity overflow or a giant allocation), and a run whose
+/// options make every step slow still honours its time limit.
+#[test]
+fn solver_options_out_of_range_are_refused() {
+    let sb = Sandbox::new();
+    let a = sb.write("a.txt", "###\n###\n###\n");
+    let b = sb.write("b.txt", "#########\n");
+    for (flag, value, says) in [
+        (
+            "--explorations",
+            "9223372036854775807",
+            "--explorations must be from 1 to",
+        ),
+        (
+            "--explorations",
+            "1000000000000",
+            "--explorations must be from 1 to",
+        ),
+        ("--explorations", "0", "--explorations must be from 1 to"),
+        ("--max-pieces", "0", "--max-pieces must be from 1 to"),
+        ("--keep", "0", "--keep must be from 1 to"),
+        (
+            "--split-penalty",
+            "nan",
+            "--split-penalty must be a finite number",
+        ),
+        ("--threads", "-1", "must be a whole number >= 0"),
+    ] {
+        refused(&sb, &["solve", "-q", flag, value, &a, &b], &[says]);
+    }
+    // Not solved in a moment: the time limit has to stop it.
+    let square = sb.write("sq.txt", &"############\n".repeat(12));
+    let rect = sb.write("rect.txt", &"################\n".repeat(9));
+    let run = sb.run_capped(
+        &[
+            "solve",
+            "-q",
+            "--no-prove",
+            "--split-tries",
+            "1000000",
+            "--time-limit",
+            "2",
+            &square,
+            &rect,
+        ],
+        LIMIT,
+    );
+    assert!(matches!(run.code, Some(0) | Some(1)), "{}", run.stderr);
+    assert!(run.elapsed < Duration::from_secs(10), "{:?}", run.elapsed);
+}
