@@ -123,7 +123,11 @@ pub(crate) fn split_worst<R: rand::Rng>(
     // The best try that really splits: both labels survive in every figure
     // (refinement can empty a small piece everywhere).
     let mut best: Option<(Candidate, Score)> = None;
-    for _ in 0..options.split_tries.max(1) {
+    for t in 0..options.split_tries.max(1) {
+        // A stop ends the tries (a million of them outlast any time limit).
+        if t > 0 && stop.load(std::sync::atomic::Ordering::Relaxed) {
+            break;
+        }
         let (c, s) = level_one(&sub, options, rng, stop);
         let splits = c.labels.iter().all(|l| l.contains(&0) && l.contains(&1));
         if splits && best.as_ref().is_none_or(|(_, b)| s.value < b.value) {
