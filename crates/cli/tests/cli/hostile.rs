@@ -494,22 +494,33 @@ fn solver_options_out_of_range_are_refused() {
     ] {
         refused(&sb, &["solve", "-q", flag, value, &a, &b], &[says]);
     }
-    // Not solved in a moment: the time limit has to stop it.
-    let square = sb.write("sq.txt", &"############\n".repeat(12));
-    let rect = sb.write("rect.txt", &"################\n".repeat(9));
+    // The paper's schedule on a 4-piece problem reaches the levels that
+    // split pieces, where a million tries per exploration take far longer
+    // than the limit: only the time limit can end this run.
+    let small = sb.write(
+        "a34.txt",
+        include_str!("../../../../examples/squares-3-4.txt"),
+    );
+    let big = sb.write("b5.txt", include_str!("../../../../examples/square-5.txt"));
     let run = sb.run_capped(
         &[
             "solve",
             "-q",
+            "--paper",
             "--no-prove",
             "--split-tries",
             "1000000",
             "--time-limit",
             "2",
-            &square,
-            &rect,
+            &small,
+            &big,
         ],
         LIMIT,
+    );
+    assert!(
+        run.elapsed >= Duration::from_millis(1500),
+        "the run ended before its time limit, so it tested nothing: {:?}",
+        run.elapsed
     );
     assert!(matches!(run.code, Some(0) | Some(1)), "{}", run.stderr);
     assert!(run.elapsed < Duration::from_secs(10), "{:?}", run.elapsed);
