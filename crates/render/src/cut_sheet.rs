@@ -10,6 +10,11 @@ use crate::{RenderError, Scene};
 /// The cut line colour (red hairline, the usual "cut" colour).
 pub const CUT: Rgb = Rgb(255, 0, 0);
 
+/// Whether cut sheets are made for `lattice` (the 2D lattices).
+pub fn supports(lattice: dissect_core::LatticeKind) -> bool {
+    lattice.lattice().dim() == 2
+}
+
 /// The cut sheet of a 2D scene (pieces as they lie in the first figure,
 /// shrunk by the clearance), at most `sheet_width_mm` wide.
 pub fn drawing(
@@ -18,7 +23,7 @@ pub fn drawing(
     sheet_width_mm: f64,
 ) -> Result<Drawing, RenderError> {
     opts.check()?;
-    if scene.lattice() == dissect_core::LatticeKind::Cubic {
+    if !supports(scene.lattice()) {
         return Err(RenderError::BadOption(
             "cut sheets are made for 2D lattices (square, tri4, tri3, hex); use --format stl or ldraw for cubic".into(),
         ));

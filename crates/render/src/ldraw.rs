@@ -87,8 +87,14 @@ pub fn merge_cells(piece: usize, cells: &[Cell], kind: PartKind) -> Vec<Brick> {
     out
 }
 
+/// Whether LDraw models are made for `lattice` (square and cubic: `tri4`,
+/// `tri3` and `hex` triangles and hexagons have no LEGO part).
+pub fn supports(lattice: LatticeKind) -> bool {
+    matches!(lattice, LatticeKind::Square | LatticeKind::Cubic)
+}
+
 /// One `.ldr` model per figure (named after the figure), or an error for
-/// `tri4`, `tri3` and `hex`, whose triangles and hexagons have no LEGO part.
+/// the lattices it does not [`supports`].
 pub fn render(scene: &Scene, kind: PartKind) -> Result<Vec<(String, String)>, RenderError> {
     match scene.lattice() {
         LatticeKind::Tri4 => {

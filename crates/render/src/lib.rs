@@ -33,6 +33,7 @@ pub mod scene;
 pub mod steps;
 pub mod stl;
 pub mod svg;
+pub mod tiling;
 mod view;
 pub mod voxelize;
 
