@@ -58,6 +58,33 @@ pub const EXAMPLES: &[Example] = &[
             fig!("cube4-cavity-to-7x4x2", "b.txt"),
         ],
     },
+    Example {
+        id: "tri3-hexagon2-to-parallelogram4x3",
+        title: "Hexagon of side 2 to a 4×3 parallelogram (tri3, optimum 3 pieces)",
+        lattice: "tri3",
+        figures: &[
+            fig!("tri3-hexagon2-to-parallelogram4x3", "a.txt"),
+            fig!("tri3-hexagon2-to-parallelogram4x3", "b.txt"),
+        ],
+    },
+    Example {
+        id: "hex-three-hexagons2-to-rhombus7x3",
+        title: "Three hexagons of side 2 to a 7×3 rhombus (hex, optimum 5 pieces)",
+        lattice: "hex",
+        figures: &[
+            fig!("hex-three-hexagons2-to-rhombus7x3", "a.txt"),
+            fig!("hex-three-hexagons2-to-rhombus7x3", "b.txt"),
+        ],
+    },
+    Example {
+        id: "hex-hexagon6-to-rhombus13x7",
+        title: "Hexagon of side 6 to a 13×7 rhombus (hex)",
+        lattice: "hex",
+        figures: &[
+            fig!("hex-hexagon6-to-rhombus13x7", "a.txt"),
+            fig!("hex-hexagon6-to-rhombus13x7", "b.txt"),
+        ],
+    },
 ];
 
 /// The examples as the API lists them.

@@ -61,6 +61,20 @@ pub const FORMATS: &[&str] = &[
     "animation",
 ];
 
+/// The formats of [`FORMATS`] made for `lattice` (no cut sheet in 3D, LDraw
+/// only where LEGO has the part).
+pub fn formats_for(lattice: dissect_core::LatticeKind) -> Vec<&'static str> {
+    FORMATS
+        .iter()
+        .copied()
+        .filter(|f| match *f {
+            "cut-sheet" => dissect_render::cut_sheet::supports(lattice),
+            "ldraw" => dissect_render::ldraw::supports(lattice),
+            _ => true,
+        })
+        .collect()
+}
+
 fn render_error(e: RenderError) -> ApiError {
     match e {
         RenderError::BadOption(m) => ApiError::BadValue(m),

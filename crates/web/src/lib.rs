@@ -19,6 +19,7 @@ pub mod security;
 mod assets;
 mod examples;
 mod idle;
+mod lattices;
 mod routes;
 mod sha256;
 

@@ -4,6 +4,7 @@
 //! |---|---|
 //! | `GET /` and `GET /<asset>` | the page |
 //! | `GET /api/info` | version, lattices, limits, export formats |
+//! | `GET /api/lattices` | how the page draws each lattice's cells (tiles, neighbours) |
 //! | `GET /api/examples` | the shipped examples with their figure texts |
 //! | `POST /api/figures` | read figures (cells or text): cells, text, counts |
 //! | `POST /api/solve` | start a solve: `202 {"id": ..}` |
@@ -38,7 +39,7 @@ use crate::figures::{self, FigureInput};
 use crate::jobs::{Job, Jobs, Request, State as JobState};
 use crate::limits::Limits;
 use crate::security::{self, Access};
-use crate::{assets, examples, export, picture};
+use crate::{assets, examples, export, lattices, picture};
 
 /// The largest request body, in bytes.
 pub const MAX_BODY: usize = 8 * 1024 * 1024;
@@ -88,6 +89,7 @@ pub fn router_with_access(limits: Limits, access: Access) -> Router {
 pub(crate) fn router_with_state(state: AppState) -> Router {
     Router::new()
         .route("/api/info", get(info))
+        .route("/api/lattices", get(list_lattices))
         .route("/api/examples", get(list_examples))
         .route("/api/figures", post(read_figures))
         .route("/api/solve", post(start_solve))
@@ -135,7 +137,7 @@ async fn info(State(s): State<AppState>) -> Json<Value> {
     Json(json!({
         "name": "dissect",
         "version": env!("CARGO_PKG_VERSION"),
-        "lattices": ["square", "tri4", "cubic"],
+        "lattices": dissect_core::LatticeKind::ALL.map(|k| k.name()),
         "limits": {
             "max_cells": l.max_cells(),
             "max_extent": l.max_extent(),
@@ -146,6 +148,10 @@ async fn info(State(s): State<AppState>) -> Json<Value> {
         },
         "exports": export::FORMATS,
     }))
+}
+
+async fn list_lattices() -> Json<Value> {
+    Json(lattices::list())
 }
 
 async fn list_examples() -> Json<Value> {
