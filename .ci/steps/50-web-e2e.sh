@@ -3,7 +3,8 @@
 # crates/web/e2e/studio.test.mjs in Debian's headless chromium
 # (playwright-core), solutions checked with ../shared/tools/verify.py.
 # The tests write docs/studio-*.png and docs/motion-*.png (the motion
-# player and the shared HTML page: crates/web/e2e/motion.test.mjs).
+# player and the shared HTML page: crates/web/e2e/motion.test.mjs); the
+# tri3 and hex studio: crates/web/e2e/lattices.test.mjs.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 root=$PWD
@@ -30,4 +31,4 @@ echo "studio at $url"
 verify=${DISSECT_VERIFY:-$root/../shared/tools/verify.py}
 cd crates/web/e2e
 DISSECT_URL=$url DISSECT_VERIFY=$verify DISSECT_DOCS=$root/docs \
-  timeout 300 node --test --test-concurrency=1 studio.test.mjs motion.test.mjs
+  timeout 420 node --test --test-concurrency=1 studio.test.mjs lattices.test.mjs motion.test.mjs

@@ -15,57 +15,135 @@ const key = (x, y, t) => `${x},${y},${t}`;
 const unkey = (k) => k.split(',').map(Number);
 
 // ---------------------------------------------------------------- geometry
+//
+// The page keeps no geometry of its own: every lattice's cells come from
+// the server (GET /api/lattices, made by dissect_render::tiling from the
+// lattice itself). A lattice is a periodic block of tiles: cell
+// (x + px, y, t) is cell (x, y, t) moved by the plane vector steps[0],
+// (x, y + py, t) moved by steps[1]; each tile has its polygon, centre and,
+// per edge, the neighbour across it. On a layered lattice (cubic) the third
+// coordinate is the layer and each layer is drawn on its own. Plane units:
+// the side of a square or triangle, the distance between hexagon centres.
 
-const CORNERS = (x, y) => [[x, y], [x + 1, y], [x + 1, y + 1], [x, y + 1]];
+const LATTICES = new Map(); // name -> description (+ tileAt index)
 
-/** Polygons (in cell units) of a cell: [x,y,t] where t is the triangle on tri4, z on cubic. */
-function cellPolygon(lattice, [x, y, t]) {
-  if (lattice !== 'tri4') return CORNERS(x, y);
-  const c = CORNERS(x, y);
-  return [c[t], c[(t + 1) % 4], [x + 0.5, y + 0.5]];
+/** Stores the server's lattice descriptions. */
+function setLattices(list) {
+  for (const L of list) {
+    L.tileAt = new Map(L.tiles.map((t) => [key(...t.cell), t]));
+    LATTICES.set(L.lattice, L);
+  }
 }
 
-/** Edges of a cell with the neighbour across each: [[p, q], neighbourKey]. */
-function cellEdges(lattice, [x, y, t]) {
-  const c = CORNERS(x, y);
-  if (lattice !== 'tri4') {
-    return [
-      [[c[0], c[1]], key(x, y - 1, t)],
-      [[c[1], c[2]], key(x + 1, y, t)],
-      [[c[2], c[3]], key(x, y + 1, t)],
-      [[c[3], c[0]], key(x - 1, y, t)],
-    ];
-  }
-  const centre = [x + 0.5, y + 0.5];
-  const across = [key(x, y - 1, 2), key(x + 1, y, 3), key(x, y + 1, 0), key(x - 1, y, 1)][t];
-  return [
-    [[c[t], c[(t + 1) % 4]], across],
-    [[c[t], centre], key(x, y, (t + 3) % 4)],
-    [[c[(t + 1) % 4], centre], key(x, y, (t + 1) % 4)],
-  ];
+function geo(lattice = state.lattice) {
+  const L = LATTICES.get(lattice);
+  if (!L) throw new Error(`the server describes no lattice ${lattice}`);
+  return L;
+}
+
+/** The tile of a cell and the plane offset of its period block. */
+function tileOf(L, [x, y, t = 0]) {
+  const [px, py] = L.period;
+  const bx = Math.floor(x / px), by = Math.floor(y / py);
+  const tile = L.tileAt.get(key(x - bx * px, y - by * py, L.layers ? 0 : t));
+  if (!tile) throw new Error(`${[x, y, t]} is not a ${L.lattice} cell`);
+  const [s, u] = L.steps;
+  return { tile, off: [bx * s[0] + by * u[0], bx * s[1] + by * u[1]] };
+}
+
+/** The polygon of a cell in plane units. */
+function cellPolygon(lattice, c) {
+  const { tile, off } = tileOf(geo(lattice), c);
+  return tile.polygon.map(([px, py]) => [px + off[0], py + off[1]]);
+}
+
+/** Edges of a cell with the key of the neighbour across each: [[p, q], neighbourKey, sameBlock]. */
+function cellEdges(lattice, c) {
+  const L = geo(lattice);
+  const { tile, off } = tileOf(L, c);
+  const [x, y, t = 0] = c;
+  const pts = tile.polygon.map(([px, py]) => [px + off[0], py + off[1]]);
+  return tile.across.map(([dx, dy, dt], i) => [
+    [pts[i], pts[(i + 1) % pts.length]],
+    key(x + dx, y + dy, t + dt),
+    dx === 0 && dy === 0,
+  ]);
 }
 
 /** Neighbours of an editor cell inside one layer (for flood fill). */
-function neighbours(lattice, [x, y, t]) {
-  if (lattice === 'tri4') return cellEdges(lattice, [x, y, t]).map((e) => unkey(e[1]));
-  return [[x + 1, y, t], [x - 1, y, t], [x, y + 1, t], [x, y - 1, t]];
+function neighbours(lattice, c) {
+  return cellEdges(lattice, c).map((e) => unkey(e[1]));
 }
 
-/** The cell under a point given in cell units (tri4 picks the triangle). */
-function cellAt(lattice, fx, fy, layer) {
-  const x = Math.floor(fx), y = Math.floor(fy);
-  if (lattice === 'tri4') {
-    const dx = fx - x - 0.5, dy = fy - y - 0.5;
-    const t = Math.abs(dy) > Math.abs(dx) ? (dy < 0 ? 0 : 2) : (dx > 0 ? 1 : 3);
-    return [x, y, t];
+function insidePolygon(pts, [fx, fy]) {
+  let inside = false;
+  for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) {
+    const [xi, yi] = pts[i], [xj, yj] = pts[j];
+    if ((yi > fy) !== (yj > fy) && fx < ((xj - xi) * (fy - yi)) / (yj - yi) + xi) inside = !inside;
   }
-  return [x, y, lattice === 'cubic' ? layer : 0];
+  return inside;
 }
 
-/** All cells of block (x, y) on the current layer. */
+/** The cell under a plane point (the nearest centre when on an edge). */
+function cellAt(lattice, fx, fy, layer) {
+  const L = geo(lattice);
+  const [[a, b], [c, d]] = L.steps; // plane = i·steps[0] + j·steps[1]
+  const det = a * d - c * b;
+  const i0 = Math.floor((fx * d - fy * c) / det), j0 = Math.floor((a * fy - b * fx) / det);
+  let best = null, bestD = Infinity;
+  for (let j = j0 - 1; j <= j0 + 1; j++) {
+    for (let i = i0 - 1; i <= i0 + 1; i++) {
+      const off = [i * a + j * c, i * b + j * d];
+      for (const tile of L.tiles) {
+        const cell = [i * L.period[0] + tile.cell[0], j * L.period[1] + tile.cell[1], L.layers ? layer : tile.cell[2]];
+        const pts = tile.polygon.map(([px, py]) => [px + off[0], py + off[1]]);
+        if (insidePolygon(pts, [fx, fy])) return cell;
+        const dd = (tile.centre[0] + off[0] - fx) ** 2 + (tile.centre[1] + off[1] - fy) ** 2;
+        if (dd < bestD) { bestD = dd; best = cell; }
+      }
+    }
+  }
+  return best;
+}
+
+/** All cells at position (x, y) (the 4 triangles of a tri4 square; the cell on the current layer). */
 function blockCells(lattice, x, y, layer) {
-  if (lattice === 'tri4') return [0, 1, 2, 3].map((t) => [x, y, t]);
-  return [[x, y, lattice === 'cubic' ? layer : 0]];
+  const L = geo(lattice);
+  const [px, py] = L.period;
+  const rx = ((x % px) + px) % px, ry = ((y % py) + py) % py;
+  return L.tiles.filter((t) => t.cell[0] === rx && t.cell[1] === ry).map((t) => [x, y, L.layers ? layer : t.cell[2]]);
+}
+
+/** The plane bounding box [[x0, y0], [x1, y1]] of some cells' polygons. */
+function boundsOf(lattice, cells) {
+  const lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
+  for (const c of cells) {
+    for (const [px, py] of cellPolygon(lattice, c)) {
+      lo[0] = Math.min(lo[0], px); lo[1] = Math.min(lo[1], py);
+      hi[0] = Math.max(hi[0], px); hi[1] = Math.max(hi[1], py);
+    }
+  }
+  return cells.length ? [lo, hi] : [[0, 0], [1, 1]];
+}
+
+/** Every cell of a w × h editor grid (one layer). */
+function gridCells(lattice, w, h, layer = 0) {
+  const out = [];
+  for (let y = 0; y < h; y++) for (let x = 0; x < w; x++) out.push(...blockCells(lattice, x, y, layer));
+  return out;
+}
+
+const gridBoundsCache = new Map();
+/** The plane box of a w × h editor grid. */
+function gridBounds(lattice, w, h) {
+  const k = `${lattice},${w},${h}`;
+  if (!gridBoundsCache.has(k)) gridBoundsCache.set(k, boundsOf(lattice, gridCells(lattice, w, h)));
+  return gridBoundsCache.get(k);
+}
+
+/** A cell as solution files and the API write it. */
+function cellJson(lattice, [x, y, t]) {
+  return geo(lattice).arity === 2 ? [x, y] : [x, y, t];
 }
 
 // ------------------------------------------------------------------- state
@@ -95,60 +173,67 @@ function figureName(i) {
 
 const CANVAS_MAX = 360;
 
-function cellSize(fig) {
-  return Math.max(8, Math.min(36, Math.floor(CANVAS_MAX / Math.max(fig.w, fig.h))));
+/** The editor's scale (pixels per plane unit) and plane box of a figure. */
+function editorView(fig) {
+  const [lo, hi] = gridBounds(state.lattice, fig.w, fig.h);
+  const span = Math.max(hi[0] - lo[0], hi[1] - lo[1]);
+  const cs = Math.max(8, Math.min(36, Math.floor(CANVAS_MAX / span)));
+  return { cs, lo, hi };
 }
 
 function drawEditor(fig, card, preview = null) {
   const canvas = $('canvas.grid', card);
-  const cs = cellSize(fig);
+  const { cs, lo, hi } = editorView(fig);
   const dpr = window.devicePixelRatio || 1;
-  canvas.width = fig.w * cs * dpr + 1;
-  canvas.height = fig.h * cs * dpr + 1;
-  canvas.style.width = `${fig.w * cs + 1}px`;
-  canvas.style.height = `${fig.h * cs + 1}px`;
+  const wPx = Math.ceil((hi[0] - lo[0]) * cs), hPx = Math.ceil((hi[1] - lo[1]) * cs);
+  canvas.width = wPx * dpr + 1;
+  canvas.height = hPx * dpr + 1;
+  canvas.style.width = `${wPx + 1}px`;
+  canvas.style.height = `${hPx + 1}px`;
   const g = canvas.getContext('2d');
   g.setTransform(dpr, 0, 0, dpr, 0.5, 0.5);
   g.clearRect(-1, -1, canvas.width, canvas.height);
   const L = state.lattice;
-  const poly = (pts, fill) => {
+  const layers = geo(L).layers;
+  const path = (pts) => {
     g.beginPath();
-    pts.forEach(([px, py], i) => (i ? g.lineTo(px * cs, py * cs) : g.moveTo(px * cs, py * cs)));
+    pts.forEach(([px, py], i) => (i ? g.lineTo : g.moveTo).call(g, (px - lo[0]) * cs, (py - lo[1]) * cs));
     g.closePath();
-    g.fillStyle = fill;
-    g.fill();
   };
-  // Ghost of the layer below (cubic).
-  if (L === 'cubic' && fig.layer > 0) {
+  const poly = (pts, fill) => { path(pts); g.fillStyle = fill; g.fill(); };
+  const inGrid = (c) => c[0] >= 0 && c[1] >= 0 && c[0] < fig.w && c[1] < fig.h;
+  // Ghost of the layer below (layered lattices).
+  if (layers && fig.layer > 0) {
     for (const k of fig.cells) {
       const c = unkey(k);
-      if (c[2] === fig.layer - 1) poly(cellPolygon(L, c), '#dfe6f3');
+      if (c[2] === fig.layer - 1 && inGrid(c)) poly(cellPolygon(L, c), '#dfe6f3');
     }
   }
   for (const k of fig.cells) {
     const c = unkey(k);
-    if (L === 'cubic' && c[2] !== fig.layer) continue;
-    if (c[0] >= fig.w || c[1] >= fig.h) continue;
-    poly(cellPolygon(L, c), '#2b2d42');
+    if (layers && c[2] !== fig.layer) continue;
+    if (inGrid(c)) poly(cellPolygon(L, c), '#2b2d42');
   }
   if (preview) {
-    g.fillStyle = preview.fill ? 'rgba(37,99,235,.35)' : 'rgba(185,28,28,.3)';
-    g.fillRect(preview.x0 * cs, preview.y0 * cs, (preview.x1 - preview.x0 + 1) * cs, (preview.y1 - preview.y0 + 1) * cs);
+    const fill = preview.fill ? 'rgba(37,99,235,.35)' : 'rgba(185,28,28,.3)';
+    for (let y = preview.y0; y <= preview.y1; y++) {
+      for (let x = preview.x0; x <= preview.x1; x++) {
+        for (const c of blockCells(L, x, y, fig.layer)) poly(cellPolygon(L, c), fill);
+      }
+    }
   }
-  // Grid.
-  g.strokeStyle = '#d9dbe1';
+  // Grid: every cell edge once; edges inside a block (tri4's diagonals) faint.
   g.lineWidth = 1;
-  g.beginPath();
-  for (let x = 0; x <= fig.w; x++) { g.moveTo(x * cs, 0); g.lineTo(x * cs, fig.h * cs); }
-  for (let y = 0; y <= fig.h; y++) { g.moveTo(0, y * cs); g.lineTo(fig.w * cs, y * cs); }
-  g.stroke();
-  if (L === 'tri4') {
-    g.strokeStyle = '#eceef2';
+  for (const faint of [true, false]) {
+    g.strokeStyle = faint ? '#eceef2' : '#d9dbe1';
     g.beginPath();
-    for (let y = 0; y < fig.h; y++) {
-      for (let x = 0; x < fig.w; x++) {
-        g.moveTo(x * cs, y * cs); g.lineTo((x + 1) * cs, (y + 1) * cs);
-        g.moveTo((x + 1) * cs, y * cs); g.lineTo(x * cs, (y + 1) * cs);
+    for (const c of gridCells(L, fig.w, fig.h, fig.layer)) {
+      for (const [[p, q], n, sameBlock] of cellEdges(L, c)) {
+        if (sameBlock !== faint) continue;
+        const m = unkey(n);
+        if (inGrid(m) && key(...m) < key(...c)) continue; // drawn from the other side
+        g.moveTo((p[0] - lo[0]) * cs, (p[1] - lo[1]) * cs);
+        g.lineTo((q[0] - lo[0]) * cs, (q[1] - lo[1]) * cs);
       }
     }
     g.stroke();
@@ -240,7 +325,7 @@ function makeCard(fig, i) {
       fig[dim] = v;
       for (const k of [...fig.cells]) {
         const [x, y, t] = unkey(k);
-        if (x >= fig.w || y >= fig.h || (state.lattice === 'cubic' && t >= fig.d)) fig.cells.delete(k);
+        if (x >= fig.w || y >= fig.h || (geo().layers && t >= fig.d)) fig.cells.delete(k);
       }
       fig.layer = Math.min(fig.layer, fig.d - 1);
       record(i, before);
@@ -284,8 +369,8 @@ function attachPointer(fig, card, i) {
   let stroke = null;
   const at = (ev) => {
     const r = canvas.getBoundingClientRect();
-    const cs = cellSize(fig);
-    return [(ev.clientX - r.left) / cs, (ev.clientY - r.top) / cs];
+    const { cs, lo } = editorView(fig);
+    return [(ev.clientX - r.left) / cs + lo[0], (ev.clientY - r.top) / cs + lo[1]];
   };
   const inside = ([x, y]) => x >= 0 && y >= 0 && x < fig.w && y < fig.h;
   const set = (c, on) => {
@@ -431,7 +516,7 @@ function cellsJson(fig) {
   for (const k of fig.cells) {
     const [x, y, t] = unkey(k);
     if (x >= fig.w || y >= fig.h) continue;
-    out.push(state.lattice === 'square' ? [x, y] : [x, y, t]);
+    out.push(cellJson(state.lattice, [x, y, t]));
   }
   return out;
 }
@@ -444,7 +529,7 @@ function figureFromCells(name, cells) {
     fig.cells.add(key(x, y, t));
     fig.w = Math.max(fig.w, x + 2);
     fig.h = Math.max(fig.h, y + 2);
-    if (state.lattice === 'cubic') fig.d = Math.max(fig.d, t + 1);
+    if (geo().layers) fig.d = Math.max(fig.d, t + 1);
   }
   fig.w = Math.min(128, Math.max(fig.w, 4));
   fig.h = Math.min(128, Math.max(fig.h, 4));
@@ -493,7 +578,7 @@ async function loadPicture(i, file, want) {
     if (!res.ok) throw new Error(data.error?.message || `HTTP ${res.status}`);
     const fig = state.figures[i];
     const before = new Set(fig.cells);
-    if (state.lattice === 'cubic') {
+    if (geo().layers) {
       // The picture becomes the current layer.
       for (const k of [...fig.cells]) if (unkey(k)[2] === fig.layer) fig.cells.delete(k);
       for (const [x, y] of data.cells) fig.cells.add(key(x, y, fig.layer));
@@ -616,28 +701,31 @@ function resultCellSize(w, h) {
   return Math.max(6, Math.min(28, Math.floor(320 / Math.max(w, h))));
 }
 
-/** Draws one solved figure; cubic layers side by side. Returns the hit-test function. */
+/**
+ * Draws one solved figure (layers of a layered lattice side by side).
+ * Returns the hit test: CSS pixel offset in the canvas -> piece or -1.
+ */
 function drawSolved(canvas, lattice, pieces, hot) {
+  const L = geo(lattice);
   const owner = new Map();
   pieces.forEach((p, i) => p.forEach((c) => owner.set(key(c[0], c[1], c.length > 2 ? c[2] : 0), i)));
-  let w = 0, h = 0, d = 1;
-  for (const k of owner.keys()) {
-    const [x, y, t] = unkey(k);
-    w = Math.max(w, x + 1); h = Math.max(h, y + 1);
-    if (lattice === 'cubic') d = Math.max(d, t + 1);
-  }
-  const gap = lattice === 'cubic' ? 1 : 0;
-  const totalW = lattice === 'cubic' ? d * w + (d - 1) * gap : w;
-  const cs = resultCellSize(totalW, h);
+  const cells = [...owner.keys()].map(unkey);
+  const [lo, hi] = boundsOf(lattice, cells);
+  const d = L.layers ? Math.max(1, ...cells.map((c) => c[2] + 1)) : 1;
+  const gap = L.layers ? 1 : 0;
+  const layerW = hi[0] - lo[0];
+  const totalW = d * layerW + (d - 1) * gap;
+  const cs = resultCellSize(totalW, hi[1] - lo[1]);
   const dpr = window.devicePixelRatio || 1;
-  canvas.width = (totalW * cs + 2) * dpr;
-  canvas.height = (h * cs + 2) * dpr;
-  canvas.style.width = `${totalW * cs + 2}px`;
-  canvas.style.height = `${h * cs + 2}px`;
+  const wPx = Math.ceil(totalW * cs) + 2, hPx = Math.ceil((hi[1] - lo[1]) * cs) + 2;
+  canvas.width = wPx * dpr;
+  canvas.height = hPx * dpr;
+  canvas.style.width = `${wPx}px`;
+  canvas.style.height = `${hPx}px`;
   const g = canvas.getContext('2d');
-  g.setTransform(dpr, 0, 0, dpr, 1, 1);
-  const shift = (c) => (lattice === 'cubic' ? c[2] * (w + gap) : 0);
-  const toPx = (c) => ([px, py]) => [(px + shift(c)) * cs, py * cs];
+  g.setTransform(dpr, 0, 0, dpr, dpr, dpr);
+  const shift = (c) => (L.layers ? c[2] * (layerW + gap) : 0);
+  const toPx = (c) => ([px, py]) => [(px - lo[0] + shift(c)) * cs, (py - lo[1]) * cs];
   for (const [k, i] of owner) {
     const c = unkey(k);
     const pts = cellPolygon(lattice, c).map(toPx(c));
@@ -647,6 +735,10 @@ function drawSolved(canvas, lattice, pieces, hot) {
     g.globalAlpha = hot < 0 || hot === i ? 1 : 0.25;
     g.fillStyle = pieceColour(i);
     g.fill();
+    // The same colour along the cell's edges hides the seams between cells.
+    g.strokeStyle = pieceColour(i);
+    g.lineWidth = 0.75;
+    g.stroke();
     g.globalAlpha = 1;
   }
   // Piece outlines: edges between different pieces or to the outside.
@@ -661,15 +753,11 @@ function drawSolved(canvas, lattice, pieces, hot) {
       g.beginPath(); g.moveTo(...a); g.lineTo(...b); g.stroke();
     }
   }
-  if (lattice === 'cubic') {
-    g.fillStyle = '#6b6b70';
-    g.font = '11px sans-serif';
-  }
-  return (fx, fy) => {
-    let layer = 0, x = fx;
-    if (lattice === 'cubic') { layer = Math.floor(fx / (w + gap)); x = fx - layer * (w + gap); }
-    const c = cellAt(lattice, x, fy, layer);
-    const i = owner.get(key(...c));
+  return (cssX, cssY) => {
+    let fx = (cssX - 1) / cs, layer = 0;
+    if (L.layers) { layer = Math.floor(fx / (layerW + gap)); fx -= layer * (layerW + gap); }
+    const c = cellAt(lattice, fx + lo[0], (cssY - 1) / cs + lo[1], layer);
+    const i = c ? owner.get(key(...c)) : undefined;
     return i === undefined ? -1 : i;
   };
 }
@@ -698,7 +786,7 @@ function showResult() {
   sol.figures.forEach((f, fi) => {
     const fig = document.createElement('figure');
     const cap = document.createElement('figcaption');
-    cap.textContent = f.name + (r.lattice === 'cubic' ? ' (layers z0, z1, … left to right)' : '');
+    cap.textContent = f.name + (geo(r.lattice).layers ? ' (layers z0, z1, … left to right)' : '');
     const canvas = document.createElement('canvas');
     canvas.className = 'solved';
     canvas.dataset.testid = `solved-${fi}`;
@@ -706,15 +794,13 @@ function showResult() {
     host.append(fig);
     canvas.addEventListener('mousemove', (ev) => {
       const rect = canvas.getBoundingClientRect();
-      const cs = canvas._cs;
-      highlight(state.hitTests[fi]((ev.clientX - rect.left - 1) / cs, (ev.clientY - rect.top - 1) / cs));
+      highlight(state.hitTests[fi](ev.clientX - rect.left, ev.clientY - rect.top));
     });
     canvas.addEventListener('mouseleave', () => highlight(-1));
   });
   state.hot = -1;
   redrawResult();
-  $('#dl-cut').disabled = !state.exports.includes('cut-sheet') || r.lattice === 'cubic';
-  $('#dl-ldraw').disabled = !state.exports.includes('ldraw') || r.lattice === 'tri4';
+  enableDownloads(r.lattice);
   showMotion(sol);
 }
 
@@ -743,17 +829,9 @@ function redrawResult() {
   $$('#result-figures canvas').forEach((canvas, fi) => {
     const pieces = r.solution.figures[fi].pieces;
     state.hitTests[fi] = drawSolved(canvas, r.lattice, pieces, state.hot);
-    canvas._cs = parseFloat(canvas.style.width) > 0 ? cellSizeOfCanvas(canvas, r.lattice, pieces) : 1;
   });
   $$('#legend span').forEach((s) => s.classList.toggle('hot', Number(s.dataset.piece) === state.hot));
   state.player?.highlight(state.hot);
-}
-
-function cellSizeOfCanvas(canvas, lattice, pieces) {
-  let w = 0, h = 0, d = 1;
-  for (const p of pieces) for (const c of p) { w = Math.max(w, c[0] + 1); h = Math.max(h, c[1] + 1); if (lattice === 'cubic') d = Math.max(d, c[2] + 1); }
-  const totalW = lattice === 'cubic' ? d * w + (d - 1) : w;
-  return resultCellSize(totalW, h);
 }
 
 function highlight(i) {
@@ -764,6 +842,19 @@ function highlight(i) {
 }
 
 // -------------------------------------------------------------- downloads
+
+/** The export buttons, by format. */
+const EXPORT_BUTTONS = { html: '#dl-html', svg: '#dl-svg', png: '#dl-png', 'cut-sheet': '#dl-cut', stl: '#dl-stl', ldraw: '#dl-ldraw' };
+
+/** Turns on the downloads this server makes for the lattice (its description lists them). */
+function enableDownloads(lattice) {
+  const made = geo(lattice).exports;
+  for (const [format, sel] of Object.entries(EXPORT_BUTTONS)) {
+    const server = state.exports.includes(format);
+    $(sel).disabled = !server || !made.includes(format);
+    $(sel).title = !server ? 'this server cannot make this format yet' : made.includes(format) ? '' : `not made for the ${lattice} lattice`;
+  }
+}
 
 async function exportFile(format) {
   const r = state.result;
@@ -794,13 +885,27 @@ function setLattice(l) {
     state.figures.forEach((f) => { f.cells.clear(); f.d = 1; f.layer = 0; });
     state.undo = []; state.redo = [];
   }
-  document.body.classList.toggle('cubic', l === 'cubic');
-  $('#opt-mirror').disabled = l === 'cubic';
+  document.body.classList.toggle('cubic', geo(l).layers);
+  $('#opt-mirror').disabled = !geo(l).mirror;
 }
 
 function selectTool(tool) {
   state.tool = tool;
   $$('.tool').forEach((b) => b.classList.toggle('active', b.dataset.tool === tool));
+}
+
+/** The lattices the server describes: their geometry and the lattice menu. */
+async function loadLattices() {
+  const { lattices } = await api('GET', '/api/lattices');
+  setLattices(lattices);
+  const menu = $('#lattice');
+  menu.textContent = '';
+  for (const L of lattices) {
+    const o = document.createElement('option');
+    o.value = L.lattice;
+    o.textContent = L.title;
+    menu.append(o);
+  }
 }
 
 async function init() {
@@ -843,14 +948,19 @@ async function init() {
   $('#dl-stl').onclick = () => exportFile('stl');
   $('#dl-ldraw').onclick = () => exportFile('ldraw');
   $('#dl-html').onclick = () => exportFile('html');
+  try {
+    await loadLattices();
+  } catch (e) {
+    showMessage(`cannot read the lattices from the server: ${e.message}`);
+    return;
+  }
   setLattice('square');
   renderFigures();
   updateUndo();
   try {
     const info = await api('GET', '/api/info');
     state.exports = info.exports;
-    const buttons = { html: '#dl-html', svg: '#dl-svg', png: '#dl-png', 'cut-sheet': '#dl-cut', stl: '#dl-stl', ldraw: '#dl-ldraw' };
-    for (const [format, sel] of Object.entries(buttons)) {
+    for (const [format, sel] of Object.entries(EXPORT_BUTTONS)) {
       if (!info.exports.includes(format)) {
         $(sel).disabled = true;
         $(sel).title = 'this server cannot make this format yet';
@@ -875,5 +985,7 @@ async function init() {
 }
 
 window.studio = state; // for the end-to-end tests and the curious
+// The editor's scale and plane origin of figure i (for the end-to-end tests).
+window.studioEditorView = (i) => { const { cs, lo } = editorView(state.figures[i]); return { cs, lo }; };
 window.studioPalette = PALETTE;
 init();
