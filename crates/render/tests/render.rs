@@ -690,3 +690,89 @@ fn scenes_refuse_solutions_that_do_not_fit_their_figures() {
     let e = Scene::from_solution("{", &[]).unwrap_err();
     assert!(matches!(e, RenderError::Solution(_)), "{e}");
 }
+
+/// FORMAT.md's cell centres, written here apart from the renderer: a tri3
+/// triangle's centroid, a hex cell's centre (lattice units, y down).
+fn format_centre(lattice: LatticeKind, [x, y, _]: Cell) -> [f64; 2] {
+    let h = 3f64.sqrt() / 2.0;
+    let (xf, yf) = (x as f64, y as f64);
+    match lattice {
+        LatticeKind::Tri3 if (x + y).rem_euclid(2) == 0 => [(xf + 1.0) / 2.0, (yf + 2.0 / 3.0) * h],
+        LatticeKind::Tri3 => [(xf + 1.0) / 2.0, (yf + 1.0 / 3.0) * h],
+        LatticeKind::Hex => [xf + y.rem_euclid(2) as f64 / 2.0, yf * h],
+        _ => unreachable!("tri3 and hex only"),
+    }
+}
+
+fn sorted_points(ps: impl Iterator<Item = [f64; 2]>) -> Vec<[i64; 2]> {
+    let mut v: Vec<[i64; 2]> = ps
+        .map(|p| [(p[0] * 1e6).round() as i64, (p[1] * 1e6).round() as i64])
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn tri3_and_hex_motions_carry_every_cell_onto_its_place_in_the_other_figure() {
+    for c in [&TRI3, &HEX] {
+        let s = scene(c);
+        let data = dissect_render::animation::data(&s).unwrap();
+        assert_eq!(data["lattice"], c.lattice.name());
+        for f in 0..2 {
+            for i in 0..s.piece_count() {
+                let p = &data["figures"][f]["pieces"][i];
+                let m: Vec<Vec<f64>> = serde_json::from_value(p["matrix"].clone()).unwrap();
+                let t: Vec<f64> = serde_json::from_value(p["shift"].clone()).unwrap();
+                // Orthogonal: a turn or a flip, no stretch.
+                for r in 0..2 {
+                    for q in 0..2 {
+                        let dot = m[r][0] * m[q][0] + m[r][1] * m[q][1];
+                        assert!(
+                            (dot - if r == q { 1.0 } else { 0.0 }).abs() < 1e-9,
+                            "{}",
+                            c.name
+                        );
+                    }
+                }
+                let moved = s.cells(0, i).iter().map(|cell| {
+                    let x = format_centre(c.lattice, *cell);
+                    [
+                        m[0][0] * x[0] + m[0][1] * x[1] + t[0],
+                        m[1][0] * x[0] + m[1][1] * x[1] + t[1],
+                    ]
+                });
+                let want = s
+                    .cells(f, i)
+                    .iter()
+                    .map(|cell| format_centre(c.lattice, *cell));
+                assert_eq!(
+                    sorted_points(moved),
+                    sorted_points(want),
+                    "{}: piece {i} into figure {f}",
+                    c.name
+                );
+            }
+        }
+        // The shared page carries the data and fetches nothing.
+        let page = dissect_render::html::page(&s).unwrap();
+        assert!(
+            page.contains(&format!("\"lattice\":\"{}\"", c.lattice.name())),
+            "{}",
+            c.name
+        );
+        for bad in ["src=\"http", "href=\"http", "src=\"/", "import("] {
+            assert!(!page.contains(bad), "{}: {bad}", c.name);
+        }
+        // Step sheets: one panel per piece, each adding one piece's colour.
+        for (f, (_, svg)) in dissect_render::steps::sheets(&s).iter().enumerate() {
+            let panels: Vec<&str> = svg.split("<svg x=").skip(1).collect();
+            assert_eq!(panels.len(), s.piece_count(), "{} figure {f}", c.name);
+            for (k, p) in panels.iter().enumerate() {
+                let shown = (0..s.piece_count())
+                    .filter(|&i| p.contains(&s.colour(i).to_string()))
+                    .count();
+                assert_eq!(shown, k + 1, "{} figure {f} panel {k}", c.name);
+            }
+        }
+    }
+}
