@@ -29,10 +29,12 @@ head -c 8 "$out/sq.png" | od -An -tx1 | grep -q '89 50 4e 47'
 test -s "$out/cut-sheet.svg"
 ls "$out/ldr"/*.ldr >/dev/null
 
-# Every STL: closed, every edge used once in each direction, volume = cells x 10 x 10 x 3.
-python3 - "$out/sq.json" "$out/stl" <<'PY'
+# Every STL: closed, every edge used once in each direction, volume = cells x
+# cell area (mm^2, default 10 x 10) x 3.
+cat > "$out/stl_check.py" <<'PY'
 import json, struct, sys, glob, os
 sol = json.load(open(sys.argv[1]))
+cell_area = float(sys.argv[3]) if len(sys.argv) > 3 else 100.0
 areas = [len(p) for p in sol["figures"][0]["pieces"]]
 files = sorted(glob.glob(os.path.join(sys.argv[2], "piece-*.stl")))
 assert len(files) == len(areas), (files, areas)
@@ -51,9 +53,38 @@ for f, area in zip(files, areas):
         vol += (a[0]*(b[1]*c[2]-b[2]*c[1]) - a[1]*(b[0]*c[2]-b[2]*c[0]) + a[2]*(b[0]*c[1]-b[1]*c[0])) / 6
     bad = [e for e, m in edges.items() if m != 1 or edges.get((e[1], e[0])) != 1]
     assert not bad, f"{f}: {len(bad)} edges not shared by exactly two triangles"
-    assert abs(vol - area * 300.0) < 1e-3 * area * 300, (f, vol, area)
+    want = area * cell_area * 3.0
+    assert abs(vol - want) < 1e-3 * want, (f, vol, area, want)
     print(f"{os.path.basename(f)}: {n} triangles, closed, volume {vol:.1f} mm^3")
 PY
+python3 "$out/stl_check.py" "$out/sq.json" "$out/stl"
+
+# tri3 and hex: solve, verify, every picture, the page and the step sheets,
+# and STL volumes of true triangles (sqrt(3)/4 x 10^2) and hexagons
+# (sqrt(3)/2 x 10^2, 10 mm between centres).
+printf '###\n###\n' > "$out/t-hexagon.txt"
+printf '######\n' > "$out/t-bar.txt"
+printf '.##\n###\n.##\n' > "$out/h-hexagon.txt"
+printf '####\n###\n' > "$out/h-trapezoid.txt"
+for l in tri3 hex; do
+  case $l in tri3) a2=$out/t-hexagon.txt b2=$out/t-bar.txt cell=43.30127018922193 ;;
+             hex) a2=$out/h-hexagon.txt b2=$out/h-trapezoid.txt cell=86.60254037844386 ;; esac
+  "$bin" solve --lattice $l "$a2" "$b2" --threads 2 --quiet --time-limit 10 -o "$out/$l.json"
+  python3 ../shared/tools/verify.py --lattice $l --solution "$out/$l.json" "$a2" "$b2" | grep -q '^valid: '
+  "$bin" render "$out/$l.json" --figures "$a2" "$b2" --format png -o "$out/$l.png"
+  head -c 8 "$out/$l.png" | od -An -tx1 | grep -q '89 50 4e 47'
+  "$bin" render "$out/$l.json" --figures "$a2" "$b2" --format html -o "$out/$l.html"
+  grep -q "\"lattice\":\"$l\"" "$out/$l.html"
+  if grep -Eq '(src|href)="(https?:|/)' "$out/$l.html"; then echo "$l.html fetches something" >&2; exit 1; fi
+  "$bin" render "$out/$l.json" --figures "$a2" "$b2" --format steps -o "$out/$l-steps"
+  test "$(ls "$out/$l-steps"/steps-*.svg | wc -l)" = 2
+  "$bin" render "$out/$l.json" --figures "$a2" "$b2" --format stl -o "$out/$l-stl" --thickness 3 --clearance 0
+  python3 "$out/stl_check.py" "$out/$l.json" "$out/$l-stl" "$cell"
+  if "$bin" render "$out/$l.json" --figures "$a2" "$b2" --format ldraw -o "$out/$l-ldr" 2>"$out/err"; then
+    echo "LDraw must be refused on $l" >&2; exit 1
+  fi
+  grep -q 'LDraw' "$out/err"
+done
 
 # Pictures to figures with exact cell counts.
 cat > "$out/disc.svg" <<'SVG'
