@@ -212,3 +212,37 @@ for (const lattice of ['tri3', 'hex']) {
     assert.deepEqual(pageErrors, []);
   });
 }
+
+test('tri3 and hex: figure files and pictures load with their cell counts', async () => {
+  const b64 = await (async () => {
+    await page.goto(URL);
+    await page.waitForSelector('body[data-ready=true]');
+    return page.evaluate(() => {
+      const c = document.createElement('canvas');
+      c.width = 120; c.height = 90;
+      const g = c.getContext('2d');
+      g.fillStyle = '#fff'; g.fillRect(0, 0, 120, 90);
+      g.fillStyle = '#000'; g.beginPath(); g.arc(60, 45, 40, 0, 2 * Math.PI); g.fill();
+      return c.toDataURL('image/png').split(',')[1];
+    });
+  })();
+  // A tri3 hexagon of side 2 (24 triangles) and a hex hexagon of side 2 (7 cells), as FORMAT.md writes them.
+  const files = { tri3: ['..#####\n.#######\n.#######\n..#####\n', 24], hex: ['.##\n###\n.##\n', 7] };
+  for (const lattice of ['tri3', 'hex']) {
+    await page.goto(URL);
+    await page.waitForSelector('body[data-ready=true]');
+    await page.selectOption('[data-testid=lattice]', lattice);
+    const [text, n] = files[lattice];
+    await card(0).locator('input.load').setInputFiles({ name: `${lattice}.txt`, mimeType: 'text/plain', buffer: Buffer.from(text) });
+    await page.waitForFunction(() => window.studio.figures[0].cells.size > 0);
+    assert.equal(await count(0).textContent(), `${n} cells`, lattice);
+    // The figure saved again is the same text.
+    const saved = await saveDownload(() => card(0).locator('button.save').click());
+    assert.equal(fs.readFileSync(saved, 'utf8').trim(), text.trim(), lattice);
+    await card(1).locator('input.cells').fill('40');
+    await card(1).locator('input.picture').setInputFiles({ name: 'disc.png', mimeType: 'image/png', buffer: Buffer.from(b64, 'base64') });
+    await page.waitForFunction(() => window.studio.figures[1].cells.size > 0);
+    assert.equal(await count(1).textContent(), '40 cells', lattice);
+  }
+  assert.deepEqual(pageErrors, []);
+});
