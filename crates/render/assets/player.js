@@ -321,11 +321,6 @@ export function createPlayer(host, data, options = {}) {
       path(fig.pieces.flatMap((pc) => pc.rings), (pt) => [pt[0] + o[0], pt[1] + o[1]]);
       g.fillStyle = '#eef0f4';
       g.fill('nonzero');
-      g.fillStyle = '#6b6b70';
-      g.font = '13px system-ui, sans-serif';
-      g.textAlign = 'center';
-      const [cx] = px([(fig.min[0] + fig.max[0]) / 2 + o[0], 0]);
-      g.fillText(fig.name, cx, oy + k * (fig.max[1] + o[1]) + 16);
     }
     // Pieces still at rest first, moving pieces on top.
     const sorted = out.slice().sort((a, b) => (a.s > 0 && a.s < 1) - (b.s > 0 && b.s < 1));
@@ -350,6 +345,20 @@ export function createPlayer(host, data, options = {}) {
         g.textBaseline = 'alphabetic';
       }
       g.globalAlpha = 1;
+    }
+    // The figures' names last, on a white halo: pieces passing by never hide them.
+    g.font = '13px system-ui, sans-serif';
+    g.textAlign = 'center';
+    g.lineJoin = 'round';
+    for (const [f, o] of off) {
+      const fig = data.figures[f];
+      const [cx] = px([(fig.min[0] + fig.max[0]) / 2 + o[0], 0]);
+      const cy = oy + k * (fig.max[1] + o[1]) + 16;
+      g.strokeStyle = 'rgba(255,255,255,0.85)';
+      g.lineWidth = 4;
+      g.strokeText(fig.name, cx, cy);
+      g.fillStyle = '#6b6b70';
+      g.fillText(fig.name, cx, cy);
     }
   }
 
