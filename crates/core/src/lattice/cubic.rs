@@ -78,4 +78,10 @@ impl Lattice for Cubic {
     fn block(&self, cell: Cell) -> [i32; 3] {
         cell
     }
+    fn coarse_phases(&self, factor: i32) -> usize {
+        (factor.max(0) as usize).pow(3)
+    }
+    fn coarse_cell(&self, cell: Cell, factor: i32, phase: usize) -> Option<Cell> {
+        super::grid_coarse_cell(cell, factor, phase, 3)
+    }
 }

@@ -365,6 +365,40 @@ pub trait Lattice: Send + Sync {
         let m = self.modulus();
         [-m * min[0], -m * min[1], -m * min[2]]
     }
+
+    /// The number of ways ([`Lattice::coarse_cell`]'s `phase`) to lay the
+    /// lattice enlarged `factor` times over this one; 0 where the lattice
+    /// has no coarsening.
+    fn coarse_phases(&self, factor: i32) -> usize {
+        let _ = factor;
+        0
+    }
+
+    /// The cell of the lattice enlarged `factor` times (shifted by `phase`,
+    /// below [`Lattice::coarse_phases`]) that holds `cell`: the inverse of
+    /// enlarging a figure `factor` times. `None` where the lattice has no
+    /// coarsening or `phase` is out of range.
+    fn coarse_cell(&self, cell: Cell, factor: i32, phase: usize) -> Option<Cell> {
+        let _ = (cell, factor, phase);
+        None
+    }
+}
+
+/// The coarse cell of `cell` on a grid of `factor`-blocks along the first
+/// `dims` coordinates, shifted by the `phase`-th offset in `0..factor` per
+/// coordinate (for the square and cubic lattices, whose cells are points).
+pub(crate) fn grid_coarse_cell(cell: Cell, factor: i32, phase: usize, dims: usize) -> Option<Cell> {
+    if factor < 1 || phase >= (factor as usize).pow(dims as u32) {
+        return None;
+    }
+    let mut out = [0; 3];
+    let mut p = phase;
+    for d in 0..dims {
+        let shift = (p % factor as usize) as i32;
+        p /= factor as usize;
+        out[d] = (cell[d] + shift).div_euclid(factor);
+    }
+    Some(out)
 }
 
 /// The cells moved by the point offset `shift` (a lattice translation).

@@ -46,4 +46,10 @@ impl Lattice for Square {
     fn block(&self, cell: Cell) -> [i32; 3] {
         [cell[0], cell[1], 0]
     }
+    fn coarse_phases(&self, factor: i32) -> usize {
+        (factor.max(0) as usize).pow(2)
+    }
+    fn coarse_cell(&self, cell: Cell, factor: i32, phase: usize) -> Option<Cell> {
+        super::grid_coarse_cell(cell, factor, phase, 2)
+    }
 }

@@ -8,6 +8,7 @@
 //! of threads (unless the run is stopped early).
 
 pub(crate) mod candidate;
+pub(crate) mod coarse;
 mod explore;
 pub(crate) mod flood_fill;
 pub(crate) mod greedy;

@@ -3,6 +3,7 @@
 //! (see [`util`]).
 
 mod anytime;
+mod coarse;
 mod distance;
 mod flood_fill;
 mod levels;
