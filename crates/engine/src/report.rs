@@ -16,16 +16,19 @@ pub enum Source {
     Repair,
     /// The SAT search.
     Sat,
+    /// The level search on the figures at half resolution, lifted.
+    Coarse,
 }
 
 impl Source {
-    /// `greedy`, `search`, `repair` or `sat`.
+    /// `greedy`, `search`, `repair`, `sat` or `coarse`.
     pub fn name(self) -> &'static str {
         match self {
             Source::Greedy => "greedy",
             Source::Search => "search",
             Source::Repair => "repair",
             Source::Sat => "sat",
+            Source::Coarse => "coarse",
         }
     }
 }

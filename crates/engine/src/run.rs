@@ -156,6 +156,7 @@ impl Observer for Shared<'_> {
                 match via {
                     Via::Greedy => Source::Greedy,
                     Via::Repair => Source::Repair,
+                    Via::Coarse => Source::Coarse,
                     _ => Source::Search,
                 },
             ),

@@ -33,7 +33,7 @@ use crate::solver::{Found, Options};
 pub(crate) const FACTOR: i32 = 2;
 
 /// Figures with fewer cells are solved directly.
-pub(crate) const MIN_CELLS: usize = 400;
+pub(crate) const MIN_CELLS: usize = 300;
 
 /// Lifted candidates refined per coarse dissection before giving up.
 pub(crate) const TRIES: usize = 4;

@@ -84,6 +84,9 @@ fn add(p: Point, t: Point) -> Point {
     [p[0] + t[0], p[1] + t[1], p[2] + t[2]]
 }
 
+/// Cell pairs that vote for translations in one symmetry, at most.
+const VOTE_PAIRS: usize = 1 << 22;
+
 /// The motion `(symmetry index, translation)` carrying the most of `cells`
 /// (of shape `from`) onto free cells of shape `to`. Ties go to the first
 /// symmetry, then the smallest translation in index order.
@@ -105,8 +108,16 @@ fn best_motion(
     let (qlo, qhi) = bounds(&free);
     let mut best = (0u32, 0usize, [0i32; 3]);
     let mut votes: Vec<u32> = Vec::new();
+    // Votes are counted over at most VOTE_PAIRS pairs per symmetry: on large
+    // figures every `stride`-th cell votes (the count of a translation then
+    // estimates its overlap), which keeps a step linear in the cells.
+    let stride = (cells.len() * free.len()).div_ceil(VOTE_PAIRS).max(1);
     for (s, sym) in problem.geo.syms.iter().enumerate() {
-        let moved: Vec<Point> = cells.iter().map(|&c| sym.apply(src.point(c))).collect();
+        let moved: Vec<Point> = cells
+            .iter()
+            .step_by(stride)
+            .map(|&c| sym.apply(src.point(c)))
+            .collect();
         let (plo, phi) = bounds(&moved);
         // Translations t = q - p over every pair; only lattice translations
         // (multiples of the modulus in the moved coordinates, 0 elsewhere)

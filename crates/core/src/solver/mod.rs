@@ -171,15 +171,18 @@ pub enum Via {
     Search,
     /// A near miss of the level search, finished by the repairer.
     Repair,
+    /// A dissection of the figures at half resolution, lifted and refined.
+    Coarse,
 }
 
 impl Via {
-    /// A short name: `greedy`, `search`, `repair`.
+    /// A short name: `greedy`, `search`, `repair`, `coarse`.
     pub fn name(self) -> &'static str {
         match self {
             Via::Greedy => "greedy",
             Via::Search => "search",
             Via::Repair => "repair",
+            Via::Coarse => "coarse",
         }
     }
 }
@@ -348,12 +351,23 @@ enum From<'p> {
     /// The paper's level: two clusters at level 1, else one more piece for
     /// a random one of the kept candidates of the level below.
     Below(&'p [(Candidate, Score)]),
-    /// The descent: one piece fewer than this dissection (merge).
-    Above(&'p Candidate),
+    /// As `Below`, with a quarter of the explorations and no extra rounds:
+    /// the climb from a candidate lifted from the coarse figures.
+    Lifted(&'p [(Candidate, Score)]),
+    /// The descent: one piece fewer than this dissection (merge), with
+    /// exploration indices from the given one (a new attempt at the same
+    /// step draws new streams).
+    Above(&'p Candidate, usize),
 }
 
 /// Stream levels of the descent are kept apart from the ladder's.
 pub(crate) const DESCENT: usize = 1 << 20;
+
+/// Levels climbed at full resolution from a lifted coarse candidate.
+const CLIMB: usize = 2;
+
+/// Attempts (fresh streams) at one descent step while it ends near misses.
+const DESCENT_ATTEMPTS: usize = 4;
 
 /// The solver form of `figures` under `options`.
 fn problem_of(figures: &[Figure], options: &Options) -> Result<Problem, SolveError> {
@@ -459,9 +473,10 @@ impl<'a> Search<'a> {
         let pieces = level + 1;
         // The descent is a local step from a dissection: a quarter of a
         // level's explorations, no extra rounds.
-        let (n, extra_rounds) = match from {
-            From::Below(_) => (options.explorations.max(1), options.extra_rounds),
-            From::Above(_) => (options.explorations.div_ceil(4).max(1), 0),
+        let (n, extra_rounds, first) = match from {
+            From::Below(_) => (options.explorations.max(1), options.extra_rounds, 0),
+            From::Lifted(_) => (options.explorations.div_ceil(4).max(1), 0, 0),
+            From::Above(_, first) => (options.explorations.div_ceil(4).max(1), 0, first),
         };
         self.observer.on_event(&Event::LevelStarted {
             level,
@@ -489,7 +504,7 @@ impl<'a> Search<'a> {
         };
         let run_one = |i: usize| -> (Candidate, Score) {
             let result = match from {
-                From::Below(parents) => explore::explore_one(
+                From::Below(parents) | From::Lifted(parents) => explore::explore_one(
                     &self.problem,
                     options,
                     round,
@@ -500,7 +515,7 @@ impl<'a> Search<'a> {
                     |p| &parents[p].0,
                     self.stop,
                 ),
-                From::Above(parent) => explore::explore_one(
+                From::Above(parent, _) => explore::explore_one(
                     &self.problem,
                     options,
                     round,
@@ -518,7 +533,7 @@ impl<'a> Search<'a> {
         // What an executor gets as parents (made once per level, only for one).
         let (parents, descent): (Vec<Exploration>, bool) = match (self.executor, from) {
             (None, _) => (Vec::new(), false),
-            (Some(_), From::Below(parents)) => (
+            (Some(_), From::Below(parents) | From::Lifted(parents)) => (
                 parents
                     .iter()
                     .map(|(candidate, score)| Exploration {
@@ -530,7 +545,7 @@ impl<'a> Search<'a> {
             ),
             // The descent's parent is a dissection; explorations read only
             // a parent's labels, never its score.
-            (Some(_), From::Above(parent)) => (
+            (Some(_), From::Above(parent, _)) => (
                 vec![Exploration {
                     candidate: parent.clone(),
                     score: Score {
@@ -547,8 +562,8 @@ impl<'a> Search<'a> {
         let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(n);
         let batch = options.batch.max(1);
         let near_miss = options.near_miss(self.figures.len(), self.figures[0].len());
-        let mut start = 0;
-        let mut planned = n;
+        let mut start = first;
+        let mut planned = first + n;
         let mut stopped = false;
         while start < planned {
             let end = (start + batch).min(planned);
@@ -599,15 +614,15 @@ impl<'a> Search<'a> {
                 .min()
                 .unwrap_or(u64::MAX);
             if start == planned
-                && planned < n.saturating_mul(1 + extra_rounds)
+                && planned - first < n.saturating_mul(1 + extra_rounds)
                 && best_mismatch <= near_miss
             {
                 planned += n;
-                total.store(planned, Ordering::Relaxed);
+                total.store(planned - first, Ordering::Relaxed);
                 self.observer.on_event(&Event::LevelStarted {
                     level,
                     pieces,
-                    explorations: planned,
+                    explorations: planned - first,
                 });
             }
         }
@@ -794,6 +809,8 @@ pub struct Anytime {
     pub idle_rounds: Option<usize>,
     /// Near-miss candidates handed to the repairer per level.
     pub repair_tries: usize,
+    /// End after this many rounds (`None`: no such cap).
+    pub max_rounds: Option<usize>,
 }
 
 impl Default for Anytime {
@@ -801,6 +818,7 @@ impl Default for Anytime {
         Anytime {
             idle_rounds: Some(1),
             repair_tries: 2,
+            max_rounds: None,
         }
     }
 }
@@ -921,33 +939,114 @@ pub fn solve_anytime_with(
             }
         }
     }
-    let mut idle = 0;
-    for round in 0.. {
-        let best_pieces = best.as_ref().map_or(usize::MAX, |(b, _)| b.k);
-        // Look for fewer pieces than the best so far (and no more than the
-        // cap); two pieces is the least there can be.
-        let target = best_pieces.saturating_sub(1).min(max_pieces);
-        if target < 2 || search.stopped() {
-            break;
+    // Large figures: the level search costs about the same per level at
+    // any resolution, so it runs on the figures at half resolution (halved
+    // again while they are large); the coarse dissection is lifted, refined
+    // at full resolution and, when it is a near miss, repaired. The ladder
+    // at full resolution is then not run: the coarse search is the ladder.
+    let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
+    if large && !search.stopped() {
+        let best_pieces = best.as_ref().map_or(max_pieces, |(b, _)| b.k - 1);
+        let inner_options = Options {
+            max_pieces: Some(best_pieces.min(max_pieces)),
+            ..options.clone()
+        };
+        let inner = Anytime {
+            idle_rounds: Some(1),
+            max_rounds: Some(1),
+            ..anytime.clone()
+        };
+        let lifted = coarse::from_coarse(
+            figures,
+            &search.problem,
+            options,
+            options.seed,
+            stop,
+            |coarse_figures| {
+                solve_anytime_with(
+                    coarse_figures,
+                    &inner_options,
+                    &inner,
+                    stop,
+                    &(),
+                    repair,
+                    None,
+                )
+                .ok()?
+                .found
+            },
+        );
+        if let Some((cand, score)) = lifted {
+            let level = cand.k.saturating_sub(1);
+            let mut done = false;
+            if score.valid {
+                done = improve(
+                    &mut best,
+                    &mut outcome,
+                    cand.clone(),
+                    score,
+                    level,
+                    0,
+                    Via::Coarse,
+                );
+            } else if let Some(r) = repair {
+                let near = Level {
+                    results: vec![(cand.clone(), score)],
+                    stopped: false,
+                };
+                if let Some((c, s)) = search.repair(r, &near, level + 1, 1) {
+                    done = improve(&mut best, &mut outcome, c, s, level, 0, Via::Coarse);
+                }
+            }
+            // Not yet a dissection: climb the paper's levels from it (one
+            // more piece per level, at most CLIMB levels) while that stays
+            // below the best.
+            let mut parents = vec![(cand, score)];
+            let top = level + CLIMB;
+            let mut level = level + 1;
+            while !done && !search.stopped() && level <= top {
+                let pieces = level + 1;
+                if best.as_ref().is_some_and(|(b, _)| pieces >= b.k) || pieces > max_pieces {
+                    break;
+                }
+                let result = search.level(0, level, From::Lifted(&parents))?;
+                outcome.explorations += result.results.len();
+                if let Some((c, s)) = result.best_valid().cloned() {
+                    improve(&mut best, &mut outcome, c, s, level, 0, Via::Coarse);
+                    break;
+                }
+                if result.stopped || result.results.is_empty() {
+                    break;
+                }
+                if let Some(r) = repair {
+                    if let Some((c, s)) = search.repair(r, &result, pieces, anytime.repair_tries) {
+                        improve(&mut best, &mut outcome, c, s, level, 0, Via::Coarse);
+                        break;
+                    }
+                }
+                parents = result.kept(options.keep);
+                level += 1;
+            }
         }
-        if anytime.idle_rounds.is_some_and(|n| idle >= n) {
-            break;
-        }
-        observer.on_event(&Event::RoundStarted {
-            round,
-            max_pieces: target,
-        });
-        outcome.rounds = round + 1;
+    }
+    let near_miss = options.near_miss(figures.len(), cells);
+    // The descent: one piece fewer than the incumbent, by merging two of
+    // its pieces and refining (a near miss goes to the repairer, and earns
+    // new attempts with fresh streams), for as long as that works.
+    let descend = |best: &mut Option<(Candidate, Score)>,
+                   outcome: &mut Outcome,
+                   round: usize|
+     -> Result<bool, SolveError> {
         let mut improved = false;
-        // The descent: one piece fewer than the incumbent, by merging two
-        // of its pieces and refining, for as long as that works.
+        let mut attempt = 0;
+        let n = options.explorations.div_ceil(4).max(1);
         while let Some((parent, _)) = best.clone() {
             let pieces = parent.k - 1;
             if pieces < 2 || search.stopped() {
                 break;
             }
             let level = pieces - 1;
-            let result = search.level(round, level, From::Above(&parent))?;
+            let result = search.level(round, level, From::Above(&parent, attempt * n))?;
             outcome.explorations += result.results.len();
             let mut step = result
                 .best_valid()
@@ -960,14 +1059,33 @@ pub fn solve_anytime_with(
                         .map(|(c, s)| (c, s, Via::Repair));
                 }
             }
-            let Some((c, s, via)) = step else { break };
-            if !improve(&mut best, &mut outcome, c, s, level, round, via) {
-                break;
+            match step {
+                Some((c, s, via)) => {
+                    if !improve(best, outcome, c, s, level, round, via) {
+                        break;
+                    }
+                    improved = true;
+                    attempt = 0;
+                }
+                None => {
+                    attempt += 1;
+                    if result.stopped
+                        || attempt >= DESCENT_ATTEMPTS
+                        || result.best_mismatch() > near_miss
+                    {
+                        break;
+                    }
+                }
             }
-            improved = true;
         }
-        // The ladder: the paper's levels from two pieces up, with this
-        // round's streams, below the best so far.
+        Ok(improved)
+    };
+    // The ladder: the paper's levels from two pieces up, with this round's
+    // streams, below the best so far.
+    let ladder = |best: &mut Option<(Candidate, Score)>,
+                  outcome: &mut Outcome,
+                  round: usize|
+     -> Result<bool, SolveError> {
         let target = best
             .as_ref()
             .map_or(usize::MAX, |(b, _)| b.k)
@@ -984,20 +1102,57 @@ pub fn solve_anytime_with(
             outcome.last_pieces = outcome.last_pieces.max(pieces);
             outcome.best_mismatch = Some(result.best_mismatch());
             if let Some((c, s)) = result.best_valid().cloned() {
-                improved |= improve(&mut best, &mut outcome, c, s, level, round, Via::Search);
-                break;
+                return Ok(improve(best, outcome, c, s, level, round, Via::Search));
             }
             if result.stopped || result.results.is_empty() {
                 break;
             }
             if let Some(r) = repair {
                 if let Some((c, s)) = search.repair(r, &result, pieces, anytime.repair_tries) {
-                    improved |= improve(&mut best, &mut outcome, c, s, level, round, Via::Repair);
-                    break;
+                    return Ok(improve(best, outcome, c, s, level, round, Via::Repair));
                 }
             }
             parents = result.kept(options.keep);
         }
+        Ok(false)
+    };
+    let mut idle = 0;
+    // On large figures the coarse step was round 0.
+    let first_round = usize::from(large);
+    if large {
+        outcome.rounds = 1;
+    }
+    for round in first_round.. {
+        let best_pieces = best.as_ref().map_or(usize::MAX, |(b, _)| b.k);
+        // Look for fewer pieces than the best so far (and no more than the
+        // cap); two pieces is the least there can be.
+        let target = best_pieces.saturating_sub(1).min(max_pieces);
+        if target < 2 || search.stopped() {
+            break;
+        }
+        if anytime.idle_rounds.is_some_and(|n| idle >= n)
+            || anytime.max_rounds.is_some_and(|n| round >= n)
+        {
+            break;
+        }
+        observer.on_event(&Event::RoundStarted {
+            round,
+            max_pieces: target,
+        });
+        outcome.rounds = round + 1;
+        // Round 0 of a small figure runs the paper's ladder first (its
+        // schedule reaches the fewest pieces there), then the descent from
+        // what it found; later rounds descend first. Large figures only
+        // descend (their ladder ran on the coarse figures).
+        let improved = if large {
+            descend(&mut best, &mut outcome, round)?
+        } else if round == 0 {
+            let a = ladder(&mut best, &mut outcome, round)?;
+            descend(&mut best, &mut outcome, round)? | a
+        } else {
+            let a = descend(&mut best, &mut outcome, round)?;
+            ladder(&mut best, &mut outcome, round)? | a
+        };
         if improved {
             idle = 0;
         } else {
