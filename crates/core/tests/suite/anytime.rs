@@ -190,3 +190,31 @@ fn a_stop_at_any_moment_keeps_a_valid_dissection() {
         }
     }
 }
+
+/// A rectangle of `w`×`h` cells in the compact form (`|` between rows).
+fn rect(w: usize, h: usize) -> String {
+    vec!["#".repeat(w); h].join("|")
+}
+
+/// Large figures (here 384 cells, above the coarse threshold) are solved at
+/// half resolution first: the lifted, refined dissection improves on the
+/// constructive one, and the answer is a verified dissection.
+#[test]
+fn large_figures_are_solved_coarse_to_fine() {
+    let figures = [fig(Square, &rect(32, 12)), fig(Square, &rect(24, 16))];
+    let settings = Anytime {
+        idle_rounds: Some(0),
+        ..Anytime::default()
+    };
+    let (outcome, improvements) = anytime(&figures, &small(1, 2), &settings, None);
+    let n = verified(LatticeKind::Square, &figures, &outcome);
+    assert!(
+        improvements.iter().any(|i| i.1 == Via::Coarse),
+        "an improvement from the coarse figures: {improvements:?}"
+    );
+    assert!(
+        improvements.windows(2).all(|w| w[1].0 < w[0].0),
+        "improvements only lower the count: {improvements:?}"
+    );
+    assert!(n <= 3, "{n} pieces for a 4:3 staircase pair");
+}
