@@ -187,10 +187,50 @@ impl Via {
     }
 }
 
-/// Receives [`Event`]s (from worker threads).
+/// Receives [`Event`]s (from worker threads), and may judge the search's
+/// candidates ([`Observer::judge`]).
 pub trait Observer: Sync {
     /// Called for every event.
     fn on_event(&self, event: &Event);
+
+    /// Whether [`Observer::judge`] is to be called. `false` (the default):
+    /// the search never builds its candidates' cells for it and behaves
+    /// exactly as without a judge.
+    fn judges(&self) -> bool {
+        false
+    }
+
+    /// Judges a candidate: every result of a level's explorations (in
+    /// index order, on the search's own thread), every constructive and
+    /// repaired dissection. `pieces[f][i]` are the cells of piece `i` in
+    /// figure `f` (labels aligned to figure 0), `valid` the solver's
+    /// verdict. Every valid dissection the search finds passes through
+    /// here, so an observer can collect them; one it does not accept is
+    /// treated as invalid (never an answer).
+    fn judge(&self, pieces: &[Vec<Vec<Cell>>], valid: bool) -> Judgement {
+        let _ = (pieces, valid);
+        Judgement::default()
+    }
+}
+
+/// What [`Observer::judge`] says about a candidate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Judgement {
+    /// Whether a valid dissection may be an answer (`false`: the search
+    /// treats it as invalid).
+    pub accept: bool,
+    /// Added to the candidate's objective: a penalty steers which
+    /// candidates a level keeps as parents of the next.
+    pub penalty: f64,
+}
+
+impl Default for Judgement {
+    fn default() -> Judgement {
+        Judgement {
+            accept: true,
+            penalty: 0.0,
+        }
+    }
 }
 
 impl Observer for () {
@@ -430,6 +470,22 @@ impl<'a> Search<'a> {
         self.stop.load(Ordering::Relaxed)
     }
 
+    /// Lets the observer judge a candidate ([`Observer::judge`]): its
+    /// penalty is added to the objective, and a valid candidate it does not
+    /// accept becomes invalid.
+    fn judge(&self, cand: &Candidate, score: &mut Score) {
+        if !self.observer.judges() {
+            return;
+        }
+        let j = self
+            .observer
+            .judge(&cand.cells_by_label(self.figures), score.valid);
+        if j.penalty.is_finite() {
+            score.value += j.penalty;
+        }
+        score.valid &= j.accept;
+    }
+
     fn found(&self, cand: &Candidate, score: &Score, level: usize) -> Found {
         Found {
             pieces: cand.cells_by_label(self.figures),
@@ -454,7 +510,8 @@ impl<'a> Search<'a> {
                 .collect(),
             k: 1,
         };
-        let s0 = whole.evaluate(&self.problem, 0.0, self.options.split_penalty);
+        let mut s0 = whole.evaluate(&self.problem, 0.0, self.options.split_penalty);
+        self.judge(&whole, &mut s0);
         self.observer.on_event(&Event::LevelFinished {
             level: 0,
             pieces: 1,
@@ -597,6 +654,10 @@ impl<'a> Search<'a> {
                     chunk
                 }
             };
+            let mut chunk = chunk;
+            for (cand, score) in &mut chunk {
+                self.judge(cand, score);
+            }
             results.extend(chunk);
             start = end;
             if self.stopped() {
@@ -712,7 +773,8 @@ impl<'a> Search<'a> {
             labels.push(l);
         }
         let mut cand = Candidate { labels, k };
-        let score = cand.evaluate(&self.problem, 0.0, self.options.split_penalty);
+        let mut score = cand.evaluate(&self.problem, 0.0, self.options.split_penalty);
+        self.judge(&cand, &mut score);
         score.valid.then_some((cand, score))
     }
 }
@@ -801,6 +863,257 @@ pub fn solve_with(
     Ok(outcome)
 }
 
+/// Steps of the plateau walk per round ([`Anytime::plateau`]).
+const WALK_STEPS: usize = 3;
+/// Repaired moves per step of the plateau walk.
+const WALK_REPAIRS: usize = 4;
+
+/// Hands a ball of radius 1 or 2 around a random cell of the first figure
+/// that touches another piece to that piece; whether it found one.
+fn shift_ball<R: rand::Rng>(problem: &Problem, cand: &mut Candidate, rng: &mut R) -> bool {
+    use rand::RngExt;
+    let shape = &problem.shapes[0];
+    let labels = &mut cand.labels[0];
+    for _ in 0..32 {
+        let start = rng.random_range(0..shape.len()) as u32;
+        let own = labels[start as usize];
+        let others: Vec<u16> = shape
+            .neighbors(start)
+            .iter()
+            .map(|&n| labels[n as usize])
+            .filter(|&l| l != own)
+            .collect();
+        if others.is_empty() {
+            continue;
+        }
+        let to = others[rng.random_range(0..others.len())];
+        let radius = rng.random_range(1..=2);
+        let mut ball = vec![start];
+        let mut seen = vec![false; shape.len()];
+        seen[start as usize] = true;
+        let mut frontier = vec![start];
+        for _ in 0..radius {
+            let mut next = Vec::new();
+            for &c in &frontier {
+                for &n in shape.neighbors(c) {
+                    if !seen[n as usize] {
+                        seen[n as usize] = true;
+                        next.push(n);
+                    }
+                }
+            }
+            ball.extend(&next);
+            frontier = next;
+        }
+        for c in ball {
+            labels[c as usize] = to;
+        }
+        return true;
+    }
+    false
+}
+
+/// Valid dissections one piece above the best that the plateau descends
+/// from, per round.
+const PLATEAU_DESCENTS: usize = 4;
+
+/// The level one piece above the incumbent from `parents` (a ladder's
+/// last kept candidates), then the descent from a few of its valid
+/// results, their near misses repaired; every result is seen by the judge.
+/// Returns whether it found fewer pieces than the incumbent.
+#[allow(clippy::too_many_arguments)]
+fn plateau_descents<F>(
+    search: &Search<'_>,
+    best: &mut Option<(Candidate, Score)>,
+    outcome: &mut Outcome,
+    round: usize,
+    parents: &[(Candidate, Score)],
+    repairer: Option<&dyn Repair>,
+    anytime: &Anytime,
+    improve: &F,
+) -> Result<bool, SolveError>
+where
+    F: Fn(
+        &mut Option<(Candidate, Score)>,
+        &mut Outcome,
+        Candidate,
+        Score,
+        usize,
+        usize,
+        Via,
+    ) -> bool,
+{
+    let Some(k) = best.as_ref().map(|(b, _)| b.k) else {
+        return Ok(false);
+    };
+    if parents.is_empty() || k < 2 {
+        return Ok(false);
+    }
+    let up = search.level(round, k, From::Below(parents))?;
+    outcome.explorations += up.results.len();
+    let mut seen: Vec<Vec<u16>> = Vec::new();
+    let mut improved = false;
+    for (cand, _) in up.results.iter().filter(|(_, s)| s.valid) {
+        if seen.len() >= PLATEAU_DESCENTS || search.stopped() {
+            break;
+        }
+        let key = partition(cand);
+        if seen.contains(&key) {
+            continue;
+        }
+        seen.push(key);
+        let level = cand.k.saturating_sub(2);
+        if level == 0 {
+            break;
+        }
+        let down = search.level(round, level, From::Above(cand, 0))?;
+        outcome.explorations += down.results.len();
+        let mut step = down.best_valid().cloned().map(|(c, s)| (c, s, Via::Search));
+        if step.is_none() && !down.stopped {
+            if let Some(r) = repairer {
+                step = search
+                    .repair(r, &down, level + 1, anytime.repair_tries)
+                    .map(|(c, s)| (c, s, Via::Repair));
+            }
+        }
+        if let Some((c, s, via)) = step {
+            improved |= improve(best, outcome, c, s, level, round, via);
+        }
+    }
+    Ok(improved)
+}
+
+/// How a candidate cuts the first figure: its labels there, renumbered in
+/// order of first appearance.
+fn partition(c: &Candidate) -> Vec<u16> {
+    let mut map = vec![u16::MAX; c.k];
+    let mut next = 0u16;
+    c.labels[0]
+        .iter()
+        .map(|&l| {
+            let m = &mut map[l as usize];
+            if *m == u16::MAX {
+                *m = next;
+                next += 1;
+            }
+            *m
+        })
+        .collect()
+}
+
+/// One plateau walk from the incumbent (see [`Anytime::plateau`]): each
+/// step goes one piece up (the level search from the current dissection
+/// alone) and one piece down again (the descent from a valid result of
+/// the step up), and moves to a valid result of the step down: a random
+/// walk over dissections with the best count, each seen by the judge.
+/// Returns whether it found fewer pieces than the incumbent.
+fn plateau_walk<F>(
+    search: &Search<'_>,
+    best: &mut Option<(Candidate, Score)>,
+    outcome: &mut Outcome,
+    round: usize,
+    repairer: Option<&dyn Repair>,
+    improve: &F,
+) -> Result<bool, SolveError>
+where
+    F: Fn(
+        &mut Option<(Candidate, Score)>,
+        &mut Outcome,
+        Candidate,
+        Score,
+        usize,
+        usize,
+        Via,
+    ) -> bool,
+{
+    let Some(mut current) = best.clone() else {
+        return Ok(false);
+    };
+    let mut improved = false;
+    let mut visited = vec![partition(&current.0)];
+    for step in 0..WALK_STEPS {
+        if search.stopped() {
+            break;
+        }
+        // Streams of their own: a walk step is no round of the ladder.
+        let streams = ((round + 1) << 16) | (step + 1);
+        let k = current.0.k;
+        // Large-neighbourhood moves: a small ball of the first figure
+        // handed to a neighbouring piece, then repaired exactly.
+        if let Some(r) = repairer {
+            for t in 0..WALK_REPAIRS {
+                if search.stopped() {
+                    break;
+                }
+                let mut rng = stream(search.options.seed, streams, DESCENT - 1, t);
+                let mut moved = current.0.clone();
+                if !shift_ball(&search.problem, &mut moved, &mut rng) {
+                    continue;
+                }
+                let cells = moved.cells_by_label(search.figures);
+                let Some(fixed) = r.repair(&cells, search.stop) else {
+                    continue;
+                };
+                let Some(next) = search.candidate_of(&fixed) else {
+                    continue;
+                };
+                if next.0.k < current.0.k {
+                    improved |= improve(
+                        best,
+                        outcome,
+                        next.0.clone(),
+                        next.1,
+                        next.0.k - 1,
+                        round,
+                        Via::Repair,
+                    );
+                }
+                let key = partition(&next.0);
+                if next.0.k <= current.0.k && !visited.contains(&key) {
+                    visited.push(key);
+                    current = next;
+                }
+            }
+        }
+        let up = search.level(streams, k, From::Below(std::slice::from_ref(&current)))?;
+        outcome.explorations += up.results.len();
+        let ups: Vec<&(Candidate, Score)> = up.results.iter().filter(|(_, s)| s.valid).collect();
+        let Some(&upper) = ups.get(step % ups.len().max(1)) else {
+            break;
+        };
+        let level = upper.0.k.saturating_sub(2);
+        if level == 0 {
+            break;
+        }
+        let down = search.level(streams, level, From::Above(&upper.0, 0))?;
+        outcome.explorations += down.results.len();
+        // The first valid result that cuts the first figure unlike any
+        // dissection the walk stood on.
+        let Some(next) = down
+            .results
+            .iter()
+            .filter(|(_, s)| s.valid)
+            .find(|(c, _)| !visited.contains(&partition(c)))
+        else {
+            continue;
+        };
+        visited.push(partition(&next.0));
+        if next.0.k < k {
+            improved |= improve(
+                best,
+                outcome,
+                next.0.clone(),
+                next.1,
+                level,
+                round,
+                Via::Search,
+            );
+        }
+        current = next.clone();
+    }
+    Ok(improved)
+}
+
 /// Settings of [`solve_anytime`] beyond [`Options`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Anytime {
@@ -811,6 +1124,11 @@ pub struct Anytime {
     pub repair_tries: usize,
     /// End after this many rounds (`None`: no such cap).
     pub max_rounds: Option<usize>,
+    /// Keep searching at the best piece count, not only below it: every
+    /// round's ladder runs up to the best count's level, so more valid
+    /// dissections with the fewest pieces reach [`Observer::judge`]
+    /// (several solutions). `false`: each round looks for fewer pieces only.
+    pub plateau: bool,
 }
 
 impl Default for Anytime {
@@ -819,6 +1137,7 @@ impl Default for Anytime {
             idle_rounds: Some(1),
             repair_tries: 2,
             max_rounds: None,
+            plateau: false,
         }
     }
 }
@@ -931,8 +1250,9 @@ pub fn solve_anytime_with(
                 break 'styles;
             }
             let mut cand = greedy::greedy(&search.problem, greedy::GreedyStyle { pivot, divisor });
-            let score = cand.evaluate(&search.problem, 0.0, options.split_penalty);
+            let mut score = cand.evaluate(&search.problem, 0.0, options.split_penalty);
             debug_assert!(score.valid, "the greedy dissection is valid");
+            search.judge(&cand, &mut score);
             if score.valid {
                 let level = cand.k - 1;
                 improve(&mut best, &mut outcome, cand, score, level, 0, Via::Greedy);
@@ -976,7 +1296,8 @@ pub fn solve_anytime_with(
                 .found
             },
         );
-        if let Some((cand, score)) = lifted {
+        if let Some((cand, mut score)) = lifted {
+            search.judge(&cand, &mut score);
             let level = cand.k.saturating_sub(1);
             let mut done = false;
             if score.valid {
@@ -1030,6 +1351,8 @@ pub fn solve_anytime_with(
         }
     }
     let near_miss = options.near_miss(figures.len(), cells);
+    // The plateau (several solutions) searches at the best count too.
+    let below = usize::from(!anytime.plateau);
     // The descent: one piece fewer than the incumbent, by merging two of
     // its pieces and refining (a near miss goes to the repairer, and earns
     // new attempts with fresh streams), for as long as that works.
@@ -1089,9 +1412,10 @@ pub fn solve_anytime_with(
         let target = best
             .as_ref()
             .map_or(usize::MAX, |(b, _)| b.k)
-            .saturating_sub(1)
+            .saturating_sub(below)
             .min(max_pieces);
         let mut parents: Vec<(Candidate, Score)> = Vec::new();
+        let mut ladder_ended = false;
         for level in 1..target {
             if search.stopped() {
                 break;
@@ -1113,6 +1437,15 @@ pub fn solve_anytime_with(
                 }
             }
             parents = result.kept(options.keep);
+            ladder_ended = level + 1 == target;
+        }
+        // The plateau: a ladder that found nothing up to the best count
+        // goes one level further and descends from there, into other
+        // dissections with the best count.
+        if anytime.plateau && ladder_ended && !search.stopped() {
+            return plateau_descents(
+                &search, best, outcome, round, &parents, repair, anytime, &improve,
+            );
         }
         Ok(false)
     };
@@ -1126,7 +1459,7 @@ pub fn solve_anytime_with(
         let best_pieces = best.as_ref().map_or(usize::MAX, |(b, _)| b.k);
         // Look for fewer pieces than the best so far (and no more than the
         // cap); two pieces is the least there can be.
-        let target = best_pieces.saturating_sub(1).min(max_pieces);
+        let target = best_pieces.saturating_sub(below).min(max_pieces);
         if target < 2 || search.stopped() {
             break;
         }
@@ -1152,6 +1485,14 @@ pub fn solve_anytime_with(
         } else {
             let a = descend(&mut best, &mut outcome, round)?;
             ladder(&mut best, &mut outcome, round)? | a
+        };
+        // The plateau walk: from the incumbent one piece up and down again,
+        // and exact repairs of small moves: other dissections with the best
+        // count (each seen by the judge), or fewer pieces.
+        let improved = if anytime.plateau && !search.stopped() {
+            plateau_walk(&search, &mut best, &mut outcome, round, repair, &improve)? | improved
+        } else {
+            improved
         };
         if improved {
             idle = 0;

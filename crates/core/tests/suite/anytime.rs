@@ -218,3 +218,78 @@ fn large_figures_are_solved_coarse_to_fine() {
     );
     assert!(n <= 3, "{n} pieces for a 4:3 staircase pair");
 }
+
+/// A judge that refuses every dissection with a piece of fewer than
+/// `least` cells, and records the valid dissections it saw.
+struct Judge {
+    least: usize,
+    valid: Mutex<Vec<Vec<Vec<Vec<dissect_core::Cell>>>>>,
+}
+
+impl Observer for Judge {
+    fn on_event(&self, _event: &Event) {}
+    fn judges(&self) -> bool {
+        true
+    }
+    fn judge(
+        &self,
+        pieces: &[Vec<Vec<dissect_core::Cell>>],
+        valid: bool,
+    ) -> dissect_core::solver::Judgement {
+        let accept = pieces[0].iter().all(|p| p.len() >= self.least);
+        if valid {
+            self.valid.lock().unwrap().push(pieces.to_vec());
+        }
+        dissect_core::solver::Judgement {
+            accept,
+            penalty: if accept { 0.0 } else { 10.0 },
+        }
+    }
+}
+
+/// A dissection the judge refuses is never the answer; with the plateau
+/// the search offers more valid dissections than without it.
+#[test]
+fn the_judge_refuses_answers_and_the_plateau_offers_more() {
+    let figures = [fig(Square, "####|####"), fig(Square, "########")];
+    let run = |least: usize, plateau: bool| {
+        let judge = Judge {
+            least,
+            valid: Mutex::new(Vec::new()),
+        };
+        let settings = Anytime {
+            idle_rounds: Some(2),
+            plateau,
+            ..Anytime::default()
+        };
+        let outcome = solve_anytime(
+            &figures,
+            &small(1, 2),
+            &settings,
+            &AtomicBool::new(false),
+            &judge,
+            None,
+        )
+        .expect("solvable input");
+        (outcome, judge.valid.into_inner().unwrap())
+    };
+    let (free, _) = run(1, false);
+    let n = verified(Square, &figures, &free);
+    assert_eq!(n, 2, "two 1×4 bars");
+    // Pieces of at least 5 cells: none (8 = 4 + 4 is the only 2-piece cut,
+    // and one piece is not a dissection): no answer at all.
+    let (none, seen) = run(5, false);
+    assert!(none.found.is_none());
+    assert!(
+        !seen.is_empty(),
+        "the judge saw the valid dissections it refused"
+    );
+    let (_, plain) = run(1, false);
+    let (_, plateau) = run(1, true);
+    assert!(
+        plateau.len() > plain.len(),
+        "{} vs {}",
+        plateau.len(),
+        plain.len()
+    );
+}
