@@ -79,7 +79,7 @@ impl Collection {
         if !self.seen.insert(canonical(&self.motions, &first)) {
             return Added::Duplicate;
         }
-        let scores = Scores::of(&self.motions, &first);
+        let scores = Scores::weighted(&self.motions, &first, self.constraints.symmetry_weight());
         self.entries.push(Entry { pieces, scores });
         if fewer || self.entries.len() == 1 {
             Added::Fewer

@@ -115,6 +115,21 @@ pub enum ConstraintError {
     SymmetryWeight(String),
 }
 
+impl ConstraintError {
+    /// Whether the constraints are well formed but cannot all hold (a run
+    /// under them finds nothing: exit 1 on the command line), rather than
+    /// malformed (bad input: exit 2).
+    pub fn is_impossible(&self) -> bool {
+        matches!(
+            self,
+            ConstraintError::SizeBounds { .. }
+                | ConstraintError::MinTooLarge { .. }
+                | ConstraintError::RegionTooLarge { .. }
+                | ConstraintError::ColourCounts(_)
+        )
+    }
+}
+
 impl KeepRegions {
     /// Reads a regions grid over figure `figure` (0-based; `figures[figure]`
     /// is that figure): a text in the figure's own coordinates where a
@@ -417,6 +432,69 @@ impl Constraints {
         self.symmetry_weight
     }
 
+    /// Checks what can be checked without the figures: size bounds of at
+    /// least 1, the smallest not above the largest, a symmetry weight that
+    /// is a number >= 0.
+    pub fn validate_settings(&self) -> Result<(), ConstraintError> {
+        if self.min_piece == Some(0) {
+            return Err(ConstraintError::ZeroSize("min-piece"));
+        }
+        if self.max_piece == Some(0) {
+            return Err(ConstraintError::ZeroSize("max-piece"));
+        }
+        if let (Some(min), Some(max)) = (self.min_piece, self.max_piece) {
+            if min > max {
+                return Err(ConstraintError::SizeBounds { min, max });
+            }
+        }
+        if !(self.symmetry_weight.is_finite() && self.symmetry_weight >= 0.0) {
+            return Err(ConstraintError::SymmetryWeight(
+                self.symmetry_weight.to_string(),
+            ));
+        }
+        Ok(())
+    }
+
+    /// How far a candidate (`pieces[f][i]`, maybe not yet a dissection) is
+    /// from honouring the keep regions and the size bounds, cheaply: for
+    /// every region, the pieces it touches beyond one; for every piece of
+    /// the first figure, the cells above `--max-piece` or below
+    /// `--min-piece`. 0 for a candidate that honours them. The level
+    /// search adds it to its objective, so it keeps candidates closer to
+    /// the constraints (the checkerboard rule needs congruent pieces and is
+    /// checked on dissections only).
+    pub fn distance(&self, pieces: &[Vec<Vec<Cell>>]) -> usize {
+        let mut d = 0;
+        for k in &self.keep {
+            let Some(fig) = pieces.get(k.figure) else {
+                continue;
+            };
+            let owner: HashMap<Cell, usize> = fig
+                .iter()
+                .enumerate()
+                .flat_map(|(i, p)| p.iter().map(move |c| (*c, i)))
+                .collect();
+            for (_, cells) in k.regions() {
+                let mut ps: Vec<usize> =
+                    cells.iter().filter_map(|c| owner.get(c).copied()).collect();
+                ps.sort_unstable();
+                ps.dedup();
+                d += ps.len().saturating_sub(1);
+            }
+        }
+        if let Some(first) = pieces.first() {
+            for p in first.iter().filter(|p| !p.is_empty()) {
+                if let Some(m) = self.min_piece {
+                    d += m.saturating_sub(p.len());
+                }
+                if let Some(m) = self.max_piece {
+                    d += p.len().saturating_sub(m);
+                }
+            }
+        }
+        d
+    }
+
     /// Checks that the constraints make sense for these figures and are not
     /// impossible on their face.
     pub fn validate(&self, figures: &[Figure]) -> Result<(), ConstraintError> {
@@ -562,13 +640,7 @@ impl Constraints {
     /// The constraints as JSON, for the solution file's `constraints` key
     /// (cells as in the solution format).
     pub fn to_json(&self, lattice: LatticeKind) -> Value {
-        let cell = |c: &Cell| -> Value {
-            if lattice == LatticeKind::Square {
-                json!([c[0], c[1]])
-            } else {
-                json!([c[0], c[1], c[2]])
-            }
-        };
+        let cell = |c: &Cell| -> Value { json!(lattice.cell_coords(*c)) };
         let mut m = serde_json::Map::new();
         if !self.keep.is_empty() {
             let keep: Vec<Value> = self

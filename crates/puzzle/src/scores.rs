@@ -74,6 +74,10 @@ pub struct Scores {
     pub shapes: usize,
     /// [`symmetry`].
     pub symmetry: usize,
+    /// What `--rank variance` orders by: the variance less the symmetry
+    /// weight times [`symmetry`] (`--symmetry-weight`, the paper's proposed
+    /// symmetry term; the variance itself when the weight is 0).
+    pub objective: f64,
     /// Tilings up to each figure's symmetries, summed over the figures, when
     /// counted (see [`crate::assemblies`]); `None` when not counted or cut
     /// short.
@@ -84,12 +88,21 @@ pub struct Scores {
 impl Scores {
     /// Every score but `assemblies` (which needs the figures and a search).
     pub fn of(motions: &Motions, pieces: &[Vec<Cell>]) -> Scores {
+        Scores::weighted(motions, pieces, 0.0)
+    }
+
+    /// Every score but `assemblies`, with `objective` = variance −
+    /// `symmetry_weight` · symmetry.
+    pub fn weighted(motions: &Motions, pieces: &[Vec<Cell>], symmetry_weight: f64) -> Scores {
+        let variance = variance(pieces);
+        let symmetry = symmetry(motions, pieces);
         Scores {
             pieces: pieces.len(),
-            variance: variance(pieces),
+            variance,
             smallest: smallest(pieces),
             shapes: shapes(motions, pieces),
-            symmetry: symmetry(motions, pieces),
+            symmetry,
+            objective: variance - symmetry_weight * symmetry as f64,
             assemblies: None,
         }
     }
@@ -113,7 +126,8 @@ impl fmt::Display for Scores {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Rank {
-    /// Least area variance (the paper's choice).
+    /// Least area variance (the paper's choice; less the symmetry term
+    /// under `--symmetry-weight`).
     #[default]
     Variance,
     /// Largest smallest piece.
@@ -156,7 +170,7 @@ impl Rank {
     /// criterion, then the others in the order variance, smallest, shapes,
     /// symmetry as tie-breaks.
     pub fn compare(self, a: &Scores, b: &Scores) -> Ordering {
-        let by_variance = |a: &Scores, b: &Scores| a.variance.total_cmp(&b.variance);
+        let by_variance = |a: &Scores, b: &Scores| a.objective.total_cmp(&b.objective);
         let by_smallest = |a: &Scores, b: &Scores| b.smallest.cmp(&a.smallest);
         let by_shapes = |a: &Scores, b: &Scores| a.shapes.cmp(&b.shapes);
         let by_symmetry = |a: &Scores, b: &Scores| b.symmetry.cmp(&a.symmetry);

@@ -176,3 +176,27 @@ fn constraints_are_recorded_as_json() {
         r#"{"checkerboard":true,"keep":[{"figure":1,"regions":{"a":[[0,0],[1,0]]}}],"max_piece":2,"min_piece":1,"symmetry_weight":0.5}"#
     );
 }
+
+#[test]
+fn distance_counts_split_regions_and_cells_out_of_bounds() {
+    let square = fig("####\n", LatticeKind::Square);
+    let k = KeepRegions::parse("aa.b\n", 0, std::slice::from_ref(&square)).unwrap();
+    let c = Constraints::none()
+        .with_keep(k)
+        .with_sizes(Some(2), Some(3));
+    let sq = |xs: &[i32]| xs.iter().map(|&x| [x, 0, 0]).collect::<Vec<Cell>>();
+    // a split between two pieces: 1; pieces of 1 and 3 cells: 1 below the least.
+    assert_eq!(c.distance(&[vec![sq(&[0]), sq(&[1, 2, 3])]]), 2);
+    assert_eq!(c.distance(&[vec![sq(&[0, 1]), sq(&[2, 3])]]), 0);
+    assert_eq!(c.distance(&[vec![sq(&[0, 1, 2, 3])]]), 1);
+}
+
+#[test]
+fn impossible_and_malformed_constraints_are_told_apart() {
+    let s = |min, max| Constraints::none().with_sizes(min, max).validate_settings();
+    assert!(s(Some(3), Some(2)).unwrap_err().is_impossible());
+    assert!(!s(Some(0), None).unwrap_err().is_impossible());
+    assert_eq!(s(Some(2), Some(3)), Ok(()));
+    let w = Constraints::none().with_symmetry_weight(f64::NAN);
+    assert!(!w.validate_settings().unwrap_err().is_impossible());
+}

@@ -66,6 +66,7 @@ fn each_rank_picks_its_own_best() {
         smallest,
         shapes,
         symmetry,
+        objective: variance,
         assemblies,
     };
     let items = vec![
@@ -132,4 +133,27 @@ fn a_collection_keeps_distinct_dissections_with_the_fewest_pieces() {
     let mut c = Collection::new(m, Constraints::none().with_sizes(Some(2), None));
     assert!(matches!(c.add(three), Added::Broken(v) if v.len() == 2));
     assert!(c.is_empty());
+}
+
+#[test]
+fn symmetry_weight_turns_the_variance_ranking() {
+    let m = Motions::new(LatticeKind::Square, true);
+    // Areas 2 and 2 (variance 0), an L tromino and a domino... both cut 4+4.
+    // a: two S tetrominoes (variance 0, each with one half-turn symmetry).
+    let a = vec![
+        sq(&[(0, 0), (1, 0), (1, 1), (2, 1)]),
+        sq(&[(0, 2), (1, 2), (1, 3), (2, 3)]),
+    ];
+    // b: an I tromino and a 5-cell plus (variance 1, very symmetric).
+    let b = vec![
+        sq(&[(0, 0), (1, 0), (2, 0)]),
+        sq(&[(1, 1), (0, 2), (1, 2), (2, 2), (1, 3)]),
+    ];
+    let plain = [Scores::of(&m, &a), Scores::of(&m, &b)];
+    assert!(Rank::Variance.compare(&plain[0], &plain[1]).is_lt());
+    let w = [Scores::weighted(&m, &a, 1.0), Scores::weighted(&m, &b, 1.0)];
+    assert_eq!(w[0].variance, plain[0].variance);
+    assert_eq!(w[0].objective, w[0].variance - w[0].symmetry as f64);
+    assert!(w[1].symmetry > w[0].symmetry);
+    assert!(Rank::Variance.compare(&w[0], &w[1]).is_gt());
 }
