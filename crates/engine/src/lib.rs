@@ -12,6 +12,14 @@
 //! * [`Verified`]: a dissection that passed [`dissect_core::verify`]; the
 //!   only kind of dissection a [`Report`] holds.
 //! * [`EngineObserver`]: live events (level progress, improvements, bounds).
+//! * Puzzle runs ([`RunConfig::solutions`], [`RunConfig::rank`],
+//!   [`RunConfig::constraints`]): every candidate of the heuristic is judged
+//!   against the designer's constraints (a distance to them steers which
+//!   candidates a level keeps; a dissection that breaks them is never an
+//!   answer), the exact side encodes them as clauses, every valid
+//!   dissection is collected ([`dissect_puzzle::Collection`]: distinct up to
+//!   the lattice's motions, the fewest pieces), and the report carries them
+//!   ranked ([`Report::solutions`]), each verified and checked.
 //!
 //! Architecture invariant: like the core, this crate does no I/O and never
 //! prints.
@@ -22,8 +30,9 @@ mod report;
 mod run;
 mod verified;
 
-pub use options::{OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS};
+pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
+pub use options::{OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS};
 pub use repair::ExactRepair;
-pub use report::{End, Improvement, LowerBound, Report, Source};
+pub use report::{End, Improvement, LowerBound, Ranking, Report, Solution, Source};
 pub use run::{run, run_with, EngineError, EngineEvent, EngineObserver};
 pub use verified::Verified;

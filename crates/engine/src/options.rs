@@ -5,12 +5,18 @@
 use std::time::Duration;
 
 use dissect_core::solver::{Anytime, Options, MAX_THREADS};
+use dissect_puzzle::constraints::ConstraintError;
+use dissect_puzzle::{Constraints, Rank};
 
 /// The most explorations per level (bounds the memory a level holds).
 pub const MAX_EXPLORATIONS: usize = 1_000_000;
 /// The most candidates kept, refinement iterations, split tries and idle
 /// rounds.
 const MAX_COUNT: usize = 1_000_000;
+/// Near misses repaired per level when several solutions are asked for.
+const PLATEAU_REPAIR_TRIES: usize = 8;
+/// The most solutions a run may be asked for (`--solutions`).
+pub const MAX_SOLUTIONS: usize = 1000;
 
 /// Which searches a run uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -69,6 +75,16 @@ pub struct RunConfig {
     /// Without a time limit, end after this many rounds in a row without
     /// fewer pieces.
     pub idle_rounds: usize,
+    /// How many different dissections with the fewest pieces to report
+    /// (`--solutions`; 1: the best only). With more than one the heuristic
+    /// keeps searching at the fewest piece count (see
+    /// [`dissect_core::solver::Anytime::plateau`]).
+    pub solutions: usize,
+    /// How the solutions are ranked (`--rank`).
+    pub rank: Rank,
+    /// The designer's constraints every answer honours (`--keep N:FILE`,
+    /// `--min-piece`, `--max-piece`, `--checkerboard`, `--symmetry-weight`).
+    pub constraints: Constraints,
 }
 
 impl Default for RunConfig {
@@ -93,6 +109,9 @@ impl Default for RunConfig {
             extra_rounds: o.extra_rounds,
             patience: o.patience,
             idle_rounds: Anytime::default().idle_rounds.unwrap_or(2),
+            solutions: 1,
+            rank: Rank::default(),
+            constraints: Constraints::none(),
         }
     }
 }
@@ -127,13 +146,19 @@ pub enum OptionsError {
     /// The time limit is negative or not a number.
     #[error("--time-limit must be a number of seconds >= 0, got {0}")]
     TimeLimit(f64),
+    /// The constraints are malformed or cannot hold
+    /// ([`ConstraintError::is_impossible`] tells which).
+    #[error(transparent)]
+    Constraints(#[from] ConstraintError),
 }
 
 /// Checked run settings (built only by [`RunOptions::new`]).
 ///
 /// # Validity
 /// Every count is in its range, `area_weight` is finite and >= 0,
-/// `split_penalty` is finite, the time limit is >= 0 (infinite: none).
+/// `split_penalty` is finite, the time limit is >= 0 (infinite: none),
+/// the constraints pass [`Constraints::validate_settings`] (what needs the
+/// figures is checked by [`crate::run`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct RunOptions {
     config: RunConfig,
@@ -163,6 +188,8 @@ impl RunOptions {
         count("patience", config.patience, 0, MAX_COUNT)?;
         count("rounds", config.idle_rounds, 0, MAX_COUNT)?;
         count("threads", config.threads, 0, MAX_THREADS)?;
+        count("solutions", config.solutions, 1, MAX_SOLUTIONS)?;
+        config.constraints.validate_settings()?;
         if let Some(k) = config.max_pieces {
             count("max-pieces", k, 1, usize::MAX)?;
         }
@@ -209,6 +236,17 @@ impl RunOptions {
         self.config.strategy
     }
 
+    /// Whether the run collects solutions (several, ranked, or under
+    /// constraints or a symmetry weight) rather than reporting the
+    /// heuristic's answer as it is.
+    pub fn collects(&self) -> bool {
+        let c = &self.config;
+        c.solutions > 1
+            || c.rank != Rank::default()
+            || !c.constraints.is_empty()
+            || c.constraints.symmetry_weight() != 0.0
+    }
+
     /// The heuristic solver's settings.
     pub fn solver_options(&self) -> Options {
         let c = &self.config;
@@ -223,7 +261,9 @@ impl RunOptions {
             iterations: c.iterations,
             split_penalty: c.split_penalty,
             split_tries: c.split_tries,
-            full_levels: c.full_level,
+            // Several solutions: a level that holds a valid dissection is
+            // run to its end, for more of them.
+            full_levels: c.full_level || c.solutions > 1,
             extra_rounds: c.extra_rounds,
             patience: c.patience,
             ..Options::default()
@@ -239,7 +279,13 @@ impl RunOptions {
                 None => Some(self.config.idle_rounds),
                 Some(_) => None,
             },
-            ..Anytime::default()
+            plateau: self.config.solutions > 1,
+            // Several solutions: more near misses repaired per level.
+            repair_tries: if self.config.solutions > 1 {
+                PLATEAU_REPAIR_TRIES
+            } else {
+                Anytime::default().repair_tries
+            },
         }
     }
 }

@@ -1,5 +1,6 @@
 //! What a run produced.
 
+use dissect_puzzle::{Rank, Scores};
 use serde_json::{json, Map, Value};
 
 use crate::verified::Verified;
@@ -80,6 +81,29 @@ impl End {
     }
 }
 
+/// One of the different dissections with the fewest pieces a run
+/// collected (verified, honouring the constraints), with its scores.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Solution {
+    /// The dissection.
+    pub dissection: Verified,
+    /// Its scores (the ranking criteria).
+    pub scores: Scores,
+    /// Who found it.
+    pub source: Source,
+}
+
+/// How a run that collects solutions ranked them, and under what.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ranking {
+    /// The criterion.
+    pub rank: Rank,
+    /// How many were asked for.
+    pub asked: usize,
+    /// The constraints, as the solution files record them.
+    pub constraints: Value,
+}
+
 /// What a run produced.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Report {
@@ -113,6 +137,13 @@ pub struct Report {
     pub last_pieces: usize,
     /// The best matching cost at the last level searched.
     pub best_mismatch: Option<u64>,
+    /// When the run collected solutions (several asked for, a ranking,
+    /// constraints): the different dissections with the fewest pieces,
+    /// best first by the ranking (at most as many as asked; the first is
+    /// `best`). Empty otherwise.
+    pub solutions: Vec<Solution>,
+    /// The ranking and constraints of a run that collected solutions.
+    pub ranking: Option<Ranking>,
 }
 
 fn rounded(s: f64) -> f64 {
@@ -174,7 +205,48 @@ impl Report {
     /// The solution file text (`dissection-solution/1` with [`Report::extra`]),
     /// when a dissection was found.
     pub fn solution_json(&self) -> Option<String> {
+        if !self.solutions.is_empty() {
+            return self.solution_json_at(0);
+        }
         let best = self.best.as_ref()?;
         Some(best.dissection().to_file(self.extra()).to_json())
+    }
+
+    /// The file text of solution `i` (0-based, ranked) of a run that
+    /// collected solutions: the first has every key of [`Report::extra`];
+    /// each has its own `pieces`, `areas`, `area_variance`, `found_by`, and
+    /// `scores`, `rank` (`{"by": criterion, "position": i + 1}`) and
+    /// `constraints` (what it was solved under).
+    pub fn solution_json_at(&self, i: usize) -> Option<String> {
+        let s = self.solutions.get(i)?;
+        let mut extra = if i == 0 {
+            self.extra()
+        } else {
+            let mut m = Map::new();
+            m.insert("seed".into(), json!(self.seed));
+            m.insert("seconds".into(), json!(rounded(self.seconds)));
+            m.insert("lower_bound".into(), json!(self.lower_bound.value));
+            m.insert(
+                "optimal".into(),
+                Value::Bool(s.dissection.piece_count() <= self.lower_bound.value),
+            );
+            m
+        };
+        extra.insert("pieces".into(), json!(s.dissection.piece_count()));
+        extra.insert("areas".into(), json!(s.dissection.areas()));
+        extra.insert("area_variance".into(), json!(s.dissection.variance()));
+        extra.insert("found_by".into(), json!(s.source.name()));
+        extra.insert(
+            "scores".into(),
+            serde_json::to_value(&s.scores).unwrap_or(Value::Null),
+        );
+        if let Some(r) = &self.ranking {
+            extra.insert(
+                "rank".into(),
+                json!({"by": r.rank.name(), "position": i + 1}),
+            );
+            extra.insert("constraints".into(), r.constraints.clone());
+        }
+        Some(s.dissection.dissection().to_file(extra).to_json())
     }
 }

@@ -7,16 +7,19 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use dissect_core::solver::{
-    solve_anytime_with, solve_with, Event, Executor, Observer, Outcome, Repair, SolveError, Via,
+    solve_anytime_with, solve_with, Event, Executor, Judgement, Observer, Outcome, Repair,
+    SolveError, Via,
 };
-use dissect_core::Figure;
+use dissect_core::{Cell, Figure};
 use dissect_exact::{
     search, Bound, ExactError, ExactEvent, ExactObserver, ExactOptions, ExactOutcome, Mode, Reason,
     RepairOptions,
 };
+use dissect_puzzle::constraints::ConstraintError;
+use dissect_puzzle::{Added, Collection, Constraints, Motions};
 
 use crate::options::{RunOptions, Strategy};
-use crate::report::{End, Improvement, LowerBound, Report, Source};
+use crate::report::{End, Improvement, LowerBound, Ranking, Report, Solution, Source};
 use crate::verified::Verified;
 
 /// The exact search runs beside the heuristic only on figures of at most
@@ -36,6 +39,19 @@ const EXACT_GRACE: Duration = Duration::from_millis(300);
 /// SAT conflicts one repair of a near miss may spend (deterministic work).
 pub const REPAIR_BUDGET: u64 = 4_000;
 
+/// Added to a candidate's objective per unit of its distance to the keep
+/// regions and size bounds ([`Constraints::distance`]): a split region or
+/// a cell out of bounds weighs as much as four mismatched cells in each of
+/// two figures, so the candidates a level keeps lean towards the
+/// constraints.
+pub const CONSTRAINT_PENALTY: f64 = 8.0;
+
+/// The most dissections a puzzle run keeps at its fewest piece count.
+const MAX_COLLECTED: usize = 4096;
+
+/// How long `--rank unique` may count the assemblies of one figure.
+pub const COUNT_TIME: Duration = Duration::from_secs(5);
+
 /// Live news of a run.
 #[derive(Debug)]
 #[non_exhaustive]
@@ -48,6 +64,15 @@ pub enum EngineEvent<'a> {
     Improved(Improvement),
     /// The lower bound rose.
     LowerBound(&'a LowerBound),
+    /// A puzzle run kept a new different dissection with the fewest pieces.
+    Collected {
+        /// Its piece count (the fewest so far).
+        pieces: usize,
+        /// How many different ones with that count are kept now.
+        count: usize,
+        /// Seconds from the start of the run.
+        seconds: f64,
+    },
 }
 
 /// Receives [`EngineEvent`]s (from worker threads).
@@ -74,6 +99,46 @@ pub enum EngineError {
     /// A search produced a dissection the verifier rejects (a bug).
     #[error("internal error: the {0} dissection failed verification: {1}")]
     Unverified(&'static str, String),
+    /// The constraints do not fit the figures (a figure number out of
+    /// range, no checkerboard on the lattice) or cannot hold for them
+    /// ([`ConstraintError::is_impossible`]).
+    #[error(transparent)]
+    Constraints(#[from] ConstraintError),
+}
+
+/// The judge of a puzzle run: the constraints every answer honours, and
+/// the collection of the different valid dissections with the fewest
+/// pieces.
+struct Judge {
+    motions: Motions,
+    constraints: Constraints,
+    /// Whether the constraints steer the search (keep regions, sizes).
+    steer: bool,
+    collection: Mutex<Collection>,
+}
+
+impl Judge {
+    /// Offers a valid dissection to the collection (skipped past
+    /// `MAX_COLLECTED` at the same count); `Some((pieces, count))` when it
+    /// was kept.
+    fn collect(&self, pieces: &[Vec<Vec<Cell>>]) -> Option<(usize, usize)> {
+        let mut c = self.collection.lock().unwrap_or_else(|e| e.into_inner());
+        let n = pieces.first().map_or(0, Vec::len);
+        if c.len() < MAX_COLLECTED || c.fewest().is_some_and(|k| n < k) {
+            if let Added::New | Added::Fewer = c.add(pieces.to_vec()) {
+                return Some((n, c.len()));
+            }
+        }
+        None
+    }
+
+    /// The number of different dissections kept.
+    fn collected(&self) -> usize {
+        self.collection
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .len()
+    }
 }
 
 /// What both sides share while the run lasts.
@@ -89,6 +154,8 @@ struct Shared<'a> {
     lower: Mutex<LowerBound>,
     lower_value: AtomicUsize,
     history: Mutex<Vec<Improvement>>,
+    /// Present in a puzzle run ([`RunOptions::collects`]).
+    judge: Option<Judge>,
 }
 
 impl Shared<'_> {
@@ -164,6 +231,40 @@ impl Observer for Shared<'_> {
         }
         self.observer.on_event(&EngineEvent::Search(event));
     }
+
+    fn judges(&self) -> bool {
+        self.judge.is_some()
+    }
+
+    /// Steers by the distance to the keep regions and size bounds, refuses
+    /// a dissection that breaks a constraint, and collects the others.
+    fn judge(&self, pieces: &[Vec<Vec<Cell>>], valid: bool) -> Judgement {
+        let Some(j) = &self.judge else {
+            return Judgement::default();
+        };
+        let penalty = if j.steer {
+            CONSTRAINT_PENALTY * j.constraints.distance(pieces) as f64
+        } else {
+            0.0
+        };
+        if !valid {
+            return Judgement {
+                accept: true,
+                penalty,
+            };
+        }
+        let accept = j.constraints.check(&j.motions, pieces).is_empty();
+        if accept {
+            if let Some((pieces, count)) = j.collect(pieces) {
+                self.observer.on_event(&EngineEvent::Collected {
+                    pieces,
+                    count,
+                    seconds: self.seconds(),
+                });
+            }
+        }
+        Judgement { accept, penalty }
+    }
 }
 
 /// The exact search's events, sent to the thread that owns the run (the
@@ -229,8 +330,11 @@ pub fn run_with(
 ) -> Result<Report, EngineError> {
     dissect_core::solver::check_figures(figures)?;
     let config = options.config();
+    let constraints = &config.constraints;
+    constraints.validate(figures)?;
     let lattice = figures[0].lattice();
     let mirror = config.mirror && lattice.lattice().supports_mirror();
+    let motions = Motions::new(lattice, mirror);
     let names: Vec<String> = (0..figures.len())
         .map(|i| {
             names
@@ -255,7 +359,16 @@ pub fn run_with(
         }),
         lower_value: AtomicUsize::new(1),
         history: Mutex::new(Vec::new()),
+        judge: options.collects().then(|| Judge {
+            motions: motions.clone(),
+            constraints: constraints.clone(),
+            steer: !constraints.keep().is_empty()
+                || constraints.min_piece().is_some()
+                || constraints.max_piece().is_some(),
+            collection: Mutex::new(Collection::new(motions.clone(), constraints.clone())),
+        }),
     };
+    let wanted = config.solutions;
     let strategy = options.strategy();
     let heuristic_on = strategy != Strategy::Exact;
     let exact_on =
@@ -279,6 +392,7 @@ pub fn run_with(
         conflict_budget: (deadline.is_none() && strategy != Strategy::Exact)
             .then_some(EXACT_BUDGET),
         max_encoding_bytes: EXACT_MAX_BYTES,
+        constraints: (!constraints.is_empty()).then(|| constraints.clone()),
         ..ExactOptions::default()
     };
     let exact_repair = crate::repair::ExactRepair::new(
@@ -359,7 +473,14 @@ pub fn run_with(
             };
             // A run that does not prove (no exact side) goes on to its own
             // end: the paper's `--full-level` keeps looking.
-            if best <= lower && exact_on {
+            // Several solutions: optimal only ends the run once enough
+            // different ones are collected.
+            let enough = wanted <= 1
+                || shared
+                    .judge
+                    .as_ref()
+                    .is_some_and(|j| j.collected() >= wanted);
+            if best <= lower && exact_on && enough {
                 end = End::Optimal;
                 break;
             }
@@ -421,6 +542,65 @@ pub fn run_with(
             best = Some((v, Source::Sat, None));
         }
     }
+    // A puzzle run: the collection, with the answers of both sides, ranked;
+    // every one verified and checked against the constraints.
+    let mut solutions = Vec::new();
+    let mut ranking = None;
+    if let Some(judge) = &shared.judge {
+        let mut collection = judge
+            .collection
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .clone();
+        let heuristic_pieces = heuristic
+            .as_ref()
+            .and_then(|o| o.found.as_ref())
+            .map(|f| f.pieces.clone());
+        let sat_pieces = exact.as_ref().and_then(|o| o.found.clone());
+        for p in heuristic_pieces.iter().chain(&sat_pieces) {
+            collection.add(p.clone());
+        }
+        let heuristic_source = best
+            .as_ref()
+            .filter(|b| b.1 != Source::Sat)
+            .map_or(Source::Search, |b| b.1);
+        for e in collection.ranked(config.rank, wanted, figures, COUNT_TIME) {
+            let broken = constraints.check(&motions, &e.pieces);
+            if let Some(v) = broken.first() {
+                return Err(EngineError::Unverified(
+                    "constrained",
+                    format!("it breaks a constraint: {v}"),
+                ));
+            }
+            let source = if sat_pieces.as_ref() == Some(&e.pieces) {
+                Source::Sat
+            } else if heuristic_pieces.as_ref() == Some(&e.pieces) {
+                heuristic_source
+            } else {
+                Source::Search
+            };
+            let dissection = Verified::new(lattice, mirror, names.clone(), figures, e.pieces)
+                .map_err(|err| EngineError::Unverified("collected", err))?;
+            solutions.push(Solution {
+                dissection,
+                scores: e.scores,
+                source,
+            });
+        }
+        // The best is the first by the ranking.
+        best = solutions.first().map(|s| {
+            let level = best
+                .as_ref()
+                .filter(|b| b.0 == s.dissection)
+                .and_then(|b| b.2);
+            (s.dissection.clone(), s.source, level)
+        });
+        ranking = Some(Ranking {
+            rank: config.rank,
+            asked: wanted,
+            constraints: constraints.to_json(lattice),
+        });
+    }
     let lower_bound = shared
         .lower
         .lock()
@@ -455,6 +635,8 @@ pub fn run_with(
         rounds: outcome.map_or(0, |o| o.rounds),
         last_pieces: outcome.map_or(0, |o| o.last_pieces),
         best_mismatch: outcome.and_then(|o| o.best_mismatch),
+        solutions,
+        ranking,
     })
 }
 
