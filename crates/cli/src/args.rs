@@ -137,9 +137,10 @@ pub struct SolveArgs {
     /// Random explorations per level (paper: N = 400).
     #[arg(long, default_value_t = 400, value_name = "N", value_parser = whole_usize::<0>)]
     pub explorations: usize,
-    /// Best candidates kept per level (paper: Nb = 30).
-    #[arg(long, default_value_t = 30, value_name = "NB", value_parser = whole_usize::<0>)]
-    pub keep: usize,
+    /// A number NB: best candidates kept per level (paper: Nb = 30). N:REGIONS.txt: cells of figure N
+    /// marked with the same letter a-z in that grid end in the same piece (repeatable).
+    #[arg(long, value_name = "NB|N:REGIONS.txt", value_parser = keep_arg)]
+    pub keep: Vec<KeepArg>,
     /// Refinement iterations per exploration (paper: R = 100).
     #[arg(long, default_value_t = 100, value_name = "R", value_parser = whole_usize::<0>)]
     pub iterations: usize,
@@ -173,6 +174,24 @@ pub struct SolveArgs {
     /// Without --time-limit, end after this many rounds in a row that found no fewer pieces.
     #[arg(long, default_value_t = 1, value_name = "N")]
     pub rounds: usize,
+    /// Write up to N different dissections with the fewest pieces: OUT.json (the best), OUT-2.json, ...
+    #[arg(long, default_value_t = 1, value_name = "N", value_parser = whole_usize::<0>)]
+    pub solutions: usize,
+    /// How several solutions are ranked: variance (default), smallest, shapes, symmetry, unique.
+    #[arg(long, value_name = "CRITERION", value_parser = rank)]
+    pub rank: Option<dissect_engine::Rank>,
+    /// Every piece has at least C cells.
+    #[arg(long, value_name = "C", value_parser = whole_usize::<0>)]
+    pub min_piece: Option<usize>,
+    /// Every piece has at most C cells.
+    #[arg(long, value_name = "C", value_parser = whole_usize::<0>)]
+    pub max_piece: Option<usize>,
+    /// Every piece keeps the colour of each of its cells in a checkerboard colouring (square, cubic).
+    #[arg(long)]
+    pub checkerboard: bool,
+    /// Favour pieces with more self-symmetries when choosing among dissections (0: off).
+    #[arg(long, value_name = "X")]
+    pub symmetry_weight: Option<f64>,
     /// Write the solution JSON here.
     #[arg(short = 'o', long = "output", value_name = "OUT.json")]
     pub output: Option<PathBuf>,
@@ -216,7 +235,45 @@ pub struct InfoArgs {
     pub figures: Vec<PathBuf>,
 }
 
+/// A `--keep` value: a number of candidates, or a regions grid over a figure.
+#[derive(Clone, Debug, PartialEq)]
+pub enum KeepArg {
+    /// Best candidates kept per level.
+    Candidates(usize),
+    /// Figure (1-based) and the regions grid file.
+    Regions(usize, PathBuf),
+}
+
+fn keep_arg(s: &str) -> Result<KeepArg, String> {
+    match s.split_once(':') {
+        Some((n, file)) => match n.trim().parse::<usize>() {
+            Ok(n) if n >= 1 && !file.is_empty() => Ok(KeepArg::Regions(n, PathBuf::from(file))),
+            _ => Err(format!(
+                "{s:?}: expected N:REGIONS.txt with N a figure number from 1"
+            )),
+        },
+        None => whole_usize::<0>(s).map(KeepArg::Candidates),
+    }
+}
+
+fn rank(s: &str) -> Result<dissect_engine::Rank, String> {
+    s.parse()
+        .map_err(|e: dissect_puzzle::scores::UnknownRank| e.to_string())
+}
+
 impl SolveArgs {
+    /// The best candidates kept per level (`--keep NB`, default 30).
+    pub fn kept_candidates(&self) -> usize {
+        self.keep
+            .iter()
+            .rev()
+            .find_map(|k| match k {
+                KeepArg::Candidates(n) => Some(*n),
+                KeepArg::Regions(..) => None,
+            })
+            .unwrap_or(30)
+    }
+
     /// The run these flags ask for (checked by the engine).
     pub fn run_config(&self) -> dissect_engine::RunConfig {
         dissect_engine::RunConfig {
@@ -235,7 +292,7 @@ impl SolveArgs {
             max_pieces: self.max_pieces,
             area_weight: self.area_weight,
             explorations: self.explorations,
-            keep: self.keep,
+            keep: self.kept_candidates(),
             iterations: self.iterations,
             split_penalty: self.split_penalty,
             split_tries: self.split_tries,
@@ -243,6 +300,8 @@ impl SolveArgs {
             extra_rounds: self.extra_rounds,
             patience: self.patience,
             idle_rounds: self.rounds,
+            solutions: self.solutions,
+            rank: self.rank.unwrap_or_default(),
             ..dissect_engine::RunConfig::default()
         }
     }

@@ -7,10 +7,16 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use anyhow::Result;
-use dissect_engine::{End, EngineError, EngineEvent, EngineObserver, Report, RunOptions};
+use std::path::{Path, PathBuf};
+
+use dissect_core::Figure;
+use dissect_engine::{
+    ConstraintError, Constraints, End, EngineError, EngineEvent, EngineObserver, KeepRegions,
+    OptionsError, Report, RunOptions,
+};
 use dissect_exact::ExactObserver;
 
-use crate::args::SolveArgs;
+use crate::args::{KeepArg, SolveArgs};
 use crate::progress::{self, Progress};
 use crate::{input, InputError, Status};
 
@@ -48,6 +54,15 @@ impl EngineObserver for Display {
                 i.seconds,
                 i.source.name()
             )),
+            EngineEvent::Collected {
+                pieces,
+                count,
+                seconds,
+            } if *count > 1 => self.progress.line(&format!(
+                "{} with {} at {seconds:.1} s",
+                plural(*count, "different dissection"),
+                plural(*pieces, "piece"),
+            )),
             EngineEvent::LowerBound(b) => self.progress.line(&format!(
                 "lower bound {} ({}) at {:.1} s",
                 b.value,
@@ -62,7 +77,13 @@ impl EngineObserver for Display {
 pub fn run(args: SolveArgs) -> Result<Status> {
     let figures = input::figures(&args.figures, args.lattice)?;
     input::check_equal_areas(&args.figures, &figures)?;
-    let options = RunOptions::new(args.run_config()).map_err(|e| InputError(e.to_string()))?;
+    let mut config = args.run_config();
+    config.constraints = constraints(&args, &figures)?;
+    let options = match RunOptions::new(config) {
+        Ok(o) => o,
+        Err(OptionsError::Constraints(e)) if e.is_impossible() => return Ok(impossible(&e)),
+        Err(e) => return Err(InputError(e.to_string()).into()),
+    };
     if let Some(out) = &args.output {
         input::check_writable(out)?;
     }
@@ -93,6 +114,8 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     let report = match report {
         Ok(r) => r,
         Err(e @ EngineError::Figures(_)) => return Err(InputError(e.to_string()).into()),
+        Err(EngineError::Constraints(e)) if e.is_impossible() => return Ok(impossible(&e)),
+        Err(e @ EngineError::Constraints(_)) => return Err(InputError(e.to_string()).into()),
         Err(e) => return Err(e.into()),
     };
 
@@ -133,6 +156,12 @@ pub fn run(args: SolveArgs) -> Result<Status> {
             )));
         }
     }
+    // Several solutions: OUT-2.json, OUT-3.json, ... and a line each.
+    let others = if written.is_ok() {
+        write_others(&args, &report)
+    } else {
+        Ok(())
+    };
 
     let verdict = verdict(&report);
     if !args.quiet {
@@ -155,6 +184,18 @@ pub fn run(args: SolveArgs) -> Result<Status> {
             .enumerate()
             .map(|(i, a)| format!("{}={a}", dissect_core::ascii::piece_letter(i)))
             .collect();
+        if let Some(r) = &report.ranking {
+            text += &format!(
+                "{} with the fewest pieces ranked by {}{}\n",
+                plural(report.solutions.len(), "different dissection"),
+                r.rank,
+                if report.solutions.len() < r.asked {
+                    format!(" ({} asked for)", r.asked)
+                } else {
+                    String::new()
+                }
+            );
+        }
         text += &format!(
             "{}\npiece areas: {}\narea variance: {:.2}\ntime: {:.2} s{}\n{verdict}\n",
             plural(best.piece_count(), "piece"),
@@ -172,6 +213,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         progress::stdout(&format!("{verdict}\n"));
     }
     written?;
+    others?;
 
     #[cfg(feature = "render")]
     #[cfg(feature = "render")]
@@ -179,6 +221,77 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         crate::render::write_views(dir, best.dissection())?;
     }
     Ok(Status::Ok)
+}
+
+/// Reads `--keep N:REGIONS.txt`, `--min-piece`, `--max-piece`,
+/// `--checkerboard` and `--symmetry-weight` (a grid that cannot be read is
+/// bad input naming the file, line and column; the rest is checked by the
+/// engine).
+fn constraints(args: &SolveArgs, figures: &[Figure]) -> Result<Constraints> {
+    let mut c = Constraints::none()
+        .with_sizes(args.min_piece, args.max_piece)
+        .with_checkerboard(args.checkerboard)
+        .with_symmetry_weight(args.symmetry_weight.unwrap_or(0.0));
+    for k in &args.keep {
+        let KeepArg::Regions(n, path) = k else {
+            continue;
+        };
+        let text = input::read(path, 1 << 20)?;
+        let regions = KeepRegions::parse(&text, n - 1, figures)
+            .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
+        c = c.with_keep(regions);
+    }
+    Ok(c)
+}
+
+/// Constraints that cannot hold: the reason, and exit 1.
+fn impossible(e: &ConstraintError) -> Status {
+    progress::stderr_line(&format!(
+        "no dissection found: the constraints cannot all hold: {e}"
+    ));
+    Status::NotFound
+}
+
+/// `OUT.json`, `OUT-2.json`, ... for the `i`-th solution (0-based).
+pub fn numbered(out: &Path, i: usize) -> PathBuf {
+    if i == 0 {
+        return out.to_path_buf();
+    }
+    let stem = out
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let name = match out.extension() {
+        Some(ext) => format!("{stem}-{}.{}", i + 1, ext.to_string_lossy()),
+        None => format!("{stem}-{}", i + 1),
+    };
+    out.with_file_name(name)
+}
+
+/// Writes solutions 2, 3, ... of a run that collected them (each
+/// atomically) and lists every solution with its scores on stderr.
+fn write_others(args: &SolveArgs, report: &Report) -> Result<()> {
+    let Some(ranking) = &report.ranking else {
+        return Ok(());
+    };
+    for (i, s) in report.solutions.iter().enumerate() {
+        let path = args.output.as_ref().map(|o| numbered(o, i));
+        if let (Some(path), true) = (&path, i > 0) {
+            let text = report.solution_json_at(i).expect("a solution");
+            crate::output::write_atomic(path, &text)?;
+        }
+        if !args.quiet {
+            let label = path.map_or_else(|| format!("#{}", i + 1), |p| p.display().to_string());
+            progress::stderr_line(&format!("{label}: {} ({})", s.scores, s.source.name()));
+        }
+    }
+    if report.solutions.len() < ranking.asked && !args.quiet {
+        progress::stderr_line(&format!(
+            "found {} with the fewest pieces ({} asked for)",
+            plural(report.solutions.len(), "different dissection"),
+            ranking.asked
+        ));
+    }
+    Ok(())
 }
 
 /// `5 pieces — optimal (no 4-piece dissection exists; proof 38 s)`, or
@@ -200,4 +313,17 @@ fn verdict(report: &Report) -> String {
 /// `1 piece`, `2 pieces`.
 fn plural(n: usize, word: &str) -> String {
     format!("{n} {word}{}", if n == 1 { "" } else { "s" })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbered_outputs() {
+        let o = Path::new("dir/out.json");
+        assert_eq!(numbered(o, 0), Path::new("dir/out.json"));
+        assert_eq!(numbered(o, 1), Path::new("dir/out-2.json"));
+        assert_eq!(numbered(Path::new("x"), 2), Path::new("x-3"));
+    }
 }

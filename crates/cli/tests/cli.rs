@@ -26,6 +26,8 @@ mod info;
 mod output;
 #[path = "cli/reproducibility.rs"]
 mod reproducibility;
+#[path = "cli/solutions.rs"]
+mod solutions;
 #[path = "cli/stopping.rs"]
 mod stopping;
 #[path = "cli/verify.rs"]
