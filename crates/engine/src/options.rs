@@ -286,6 +286,7 @@ impl RunOptions {
             } else {
                 Anytime::default().repair_tries
             },
+            ..Anytime::default()
         }
     }
 }
