@@ -1,6 +1,8 @@
 //! Figures: finite, non-empty sets of cells of one lattice.
 
-use std::collections::{BTreeSet, HashMap, HashSet};
+use std::collections::BTreeSet;
+
+use rustc_hash::FxHashMap;
 
 use crate::lattice::{Cell, LatticeKind};
 
@@ -135,11 +137,16 @@ impl Figure {
         let three_d = l.dim() == 3;
         let lo = [min[0] - 1, min[1] - 1, if three_d { min[2] - 1 } else { 0 }];
         let hi = [max[0] + 1, max[1] + 1, if three_d { max[2] + 1 } else { 0 }];
-        let inside: HashSet<Cell> = self.cells.iter().copied().collect();
-        let empty: Vec<Cell> = l
-            .cells_in_box(lo, hi)
+        let mut boxed = l.cells_in_box(lo, hi);
+        boxed.sort_unstable();
+        // Both lists are sorted: the empty cells are a merge away.
+        let mut inside = self.cells.iter().peekable();
+        let empty: Vec<Cell> = boxed
             .into_iter()
-            .filter(|c| !inside.contains(c))
+            .filter(|c| {
+                while inside.next_if(|f| *f < c).is_some() {}
+                inside.peek() != Some(&c)
+            })
             .collect();
         let on_border = |c: &Cell| {
             let b = l.block(*c);
@@ -162,7 +169,45 @@ impl std::fmt::Debug for Figure {
 /// Connected components of a set of cells under the lattice's adjacency.
 pub fn components_of(lattice: LatticeKind, cells: &[Cell]) -> Vec<Vec<Cell>> {
     let l = lattice.lattice();
-    let index: HashMap<Cell, usize> = cells.iter().enumerate().map(|(i, c)| (*c, i)).collect();
+    if cells.windows(2).all(|w| w[0] < w[1]) {
+        // Sorted (a figure's cells): a neighbour lies near its cell in the
+        // list, so a galloping search from the cell finds it without a
+        // hash table (4M cells of `tri4` in about a second).
+        components_with(l, cells, |i, n| find_near(cells, i, n))
+    } else {
+        let index: FxHashMap<Cell, usize> =
+            cells.iter().enumerate().map(|(i, c)| (*c, i)).collect();
+        components_with(l, cells, |_, n| index.get(n).copied())
+    }
+}
+
+/// The index of `target` in the sorted `cells`, searched outwards from `from`.
+fn find_near(cells: &[Cell], from: usize, target: &Cell) -> Option<usize> {
+    let (lo, hi) = if *target > cells[from] {
+        let mut step = 1;
+        let mut lo = from;
+        while from + step < cells.len() && cells[from + step] < *target {
+            lo = from + step;
+            step *= 2;
+        }
+        (lo, (from + step).min(cells.len() - 1))
+    } else {
+        let mut step = 1;
+        let mut hi = from;
+        while step <= from && cells[from - step] > *target {
+            hi = from - step;
+            step *= 2;
+        }
+        (from.saturating_sub(step), hi)
+    };
+    cells[lo..=hi].binary_search(target).ok().map(|i| lo + i)
+}
+
+fn components_with(
+    l: &dyn crate::lattice::Lattice,
+    cells: &[Cell],
+    find: impl Fn(usize, &Cell) -> Option<usize>,
+) -> Vec<Vec<Cell>> {
     let mut seen = vec![false; cells.len()];
     let mut out = Vec::new();
     for start in 0..cells.len() {
@@ -175,7 +220,7 @@ pub fn components_of(lattice: LatticeKind, cells: &[Cell]) -> Vec<Vec<Cell>> {
         while let Some(i) = stack.pop() {
             comp.push(cells[i]);
             for n in l.neighbors(cells[i]) {
-                if let Some(&j) = index.get(&n) {
+                if let Some(j) = find(i, &n) {
                     if !seen[j] {
                         seen[j] = true;
                         stack.push(j);
@@ -183,7 +228,7 @@ pub fn components_of(lattice: LatticeKind, cells: &[Cell]) -> Vec<Vec<Cell>> {
                 }
             }
         }
-        comp.sort();
+        comp.sort_unstable();
         out.push(comp);
     }
     out

@@ -138,3 +138,34 @@ fn debug_prints_the_figure() {
     let f = fig(Square, "##|#.");
     assert_eq!(format!("{f:?}"), "Figure(square, 3 cells)\n##\n#\n");
 }
+
+/// `components_of` finds neighbours by a galloping search in a sorted list
+/// and by a hash table otherwise: both give the same components, on random
+/// cells of every lattice.
+#[test]
+fn components_are_the_same_sorted_or_not() {
+    use rand::{RngExt, SeedableRng};
+
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(17);
+    for lattice in LatticeKind::ALL {
+        for _ in 0..20 {
+            let hi = [rng.random_range(0..12), rng.random_range(0..12), 2];
+            let cells: Vec<_> = lattice
+                .lattice()
+                .cells_in_box([0, 0, 0], hi)
+                .into_iter()
+                .filter(|_| rng.random_bool(0.55))
+                .collect();
+            let Ok(f) = Figure::new(lattice, cells) else {
+                continue;
+            };
+            let mut sorted = components_of(lattice, f.cells());
+            let reversed: Vec<_> = f.cells().iter().rev().copied().collect();
+            let mut unsorted = components_of(lattice, &reversed);
+            sorted.sort();
+            unsorted.sort();
+            assert_eq!(sorted, unsorted, "{lattice}");
+            assert_eq!(sorted.iter().map(Vec::len).sum::<usize>(), f.len());
+        }
+    }
+}
