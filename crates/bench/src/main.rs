@@ -48,10 +48,10 @@ struct Args {
     #[arg(long, value_delimiter = ',', value_name = "NAME,...")]
     only: Vec<String>,
     /// Run only instances on this lattice.
-    #[arg(long, value_parser = parse_lattice)]
+    #[arg(long)]
     lattice: Option<LatticeKind>,
     /// Solver worker threads (0: one per core).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = dissect_engine::RunConfig::default().threads)]
     threads: usize,
     /// Run the scaling series instead of the suite.
     #[arg(long)]
@@ -113,11 +113,6 @@ struct Args {
     /// Extra rounds of explorations for near-miss levels (0: the paper's schedule).
     #[arg(long, value_name = "N")]
     extra_rounds: Option<usize>,
-}
-
-fn parse_lattice(s: &str) -> Result<LatticeKind, String> {
-    s.parse()
-        .map_err(|e: dissect_core::lattice::UnknownLattice| e.to_string())
 }
 
 fn main() -> ExitCode {

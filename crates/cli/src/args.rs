@@ -105,25 +105,26 @@ pub fn non_negative(s: &str) -> Result<f64, String> {
     })
 }
 
-fn lattice(s: &str) -> Result<LatticeKind, String> {
-    s.parse()
-        .map_err(|e: dissect_core::lattice::UnknownLattice| e.to_string())
+/// What `dissect solve` does without flags: the engine's defaults (the
+/// paper's constants, from `dissect_core::Options::default()`), never a copy.
+fn defaults() -> dissect_engine::RunConfig {
+    dissect_engine::RunConfig::default()
 }
 
 #[derive(Args, Debug)]
 #[command(allow_negative_numbers = true)]
 pub struct SolveArgs {
     /// The lattice: square, tri4, cubic, tri3 or hex.
-    #[arg(long, default_value = "square", value_parser = lattice)]
+    #[arg(long, default_value_t = LatticeKind::Square)]
     pub lattice: LatticeKind,
     /// Do not turn 2D pieces over (rotations only).
     #[arg(long)]
     pub no_mirror: bool,
     /// Seed of every random choice; the same seed gives the same result for any --threads.
-    #[arg(long, default_value_t = 1, value_parser = whole::<0>)]
+    #[arg(long, default_value_t = defaults().seed, value_parser = whole::<0>)]
     pub seed: u64,
     /// Worker threads (default: one per core; at most 256).
-    #[arg(long, default_value_t = 0, value_parser = thread_count)]
+    #[arg(long, default_value_t = defaults().threads, value_parser = thread_count)]
     pub threads: usize,
     /// Stop after this many seconds and report the best dissection found so far.
     #[arg(long, value_name = "SECS")]
@@ -132,32 +133,32 @@ pub struct SolveArgs {
     #[arg(long, value_name = "K", value_parser = whole_usize::<0>)]
     pub max_pieces: Option<usize>,
     /// Weight of the area-balance term at level 1 (paper: 0.5; 0 turns it off).
-    #[arg(long, default_value_t = 0.5, value_name = "X")]
+    #[arg(long, default_value_t = defaults().area_weight, value_name = "X")]
     pub area_weight: f64,
     /// Random explorations per level (paper: N = 400).
-    #[arg(long, default_value_t = 400, value_name = "N", value_parser = whole_usize::<0>)]
+    #[arg(long, default_value_t = defaults().explorations, value_name = "N", value_parser = whole_usize::<0>)]
     pub explorations: usize,
     /// A number NB: best candidates kept per level (paper: Nb = 30). N:REGIONS.txt: cells of figure N
     /// marked with the same letter a-z in that grid end in the same piece (repeatable).
     #[arg(long, value_name = "NB|N:REGIONS.txt", value_parser = keep_arg)]
     pub keep: Vec<KeepArg>,
     /// Refinement iterations per exploration (paper: R = 100).
-    #[arg(long, default_value_t = 100, value_name = "R", value_parser = whole_usize::<0>)]
+    #[arg(long, default_value_t = defaults().iterations, value_name = "R", value_parser = whole_usize::<0>)]
     pub iterations: usize,
     /// Objective penalty per disconnected piece during the search.
-    #[arg(long, default_value_t = 1000.0, value_name = "X")]
+    #[arg(long, default_value_t = defaults().split_penalty, value_name = "X")]
     pub split_penalty: f64,
     /// Level-1 runs tried when splitting the worst pair of pieces.
-    #[arg(long, default_value_t = 4, value_name = "N", value_parser = whole_usize::<0>)]
+    #[arg(long, default_value_t = defaults().split_tries, value_name = "N", value_parser = whole_usize::<0>)]
     pub split_tries: usize,
     /// Run the whole final level to pick the least area variance among more solutions.
     #[arg(long)]
     pub full_level: bool,
     /// Extra rounds of explorations for a level whose best candidate is a near miss (0: the paper's schedule).
-    #[arg(long, default_value_t = 1, value_name = "N", value_parser = whole_usize::<0>)]
+    #[arg(long, default_value_t = defaults().extra_rounds, value_name = "N", value_parser = whole_usize::<0>)]
     pub extra_rounds: usize,
     /// Stop refining an exploration after this many iterations without fewer conflicts (0: the paper's loop).
-    #[arg(long, default_value_t = 20, value_name = "N", value_parser = whole_usize::<0>)]
+    #[arg(long, default_value_t = defaults().patience, value_name = "N", value_parser = whole_usize::<0>)]
     pub patience: usize,
     /// Prove a lower bound by SAT beside the search and say whether the result is optimal (the default).
     #[arg(long, conflicts_with = "no_prove")]
@@ -172,10 +173,10 @@ pub struct SolveArgs {
     #[arg(long)]
     pub paper: bool,
     /// Without --time-limit, end after this many rounds in a row that found no fewer pieces.
-    #[arg(long, default_value_t = 1, value_name = "N")]
+    #[arg(long, default_value_t = defaults().idle_rounds, value_name = "N")]
     pub rounds: usize,
     /// Write up to N different dissections with the fewest pieces: OUT.json (the best), OUT-2.json, ...
-    #[arg(long, default_value_t = 1, value_name = "N", value_parser = whole_usize::<0>)]
+    #[arg(long, default_value_t = defaults().solutions, value_name = "N", value_parser = whole_usize::<0>)]
     pub solutions: usize,
     /// How several solutions are ranked: variance (default), smallest, shapes, symmetry, unique.
     #[arg(long, value_name = "CRITERION", value_parser = rank)]
@@ -214,7 +215,7 @@ pub struct SolveArgs {
 #[command(allow_negative_numbers = true)]
 pub struct VerifyArgs {
     /// The lattice (default: the solution's).
-    #[arg(long, value_parser = lattice)]
+    #[arg(long)]
     pub lattice: Option<LatticeKind>,
     /// The solution JSON.
     #[arg(long, value_name = "S.json")]
@@ -228,7 +229,7 @@ pub struct VerifyArgs {
 #[command(allow_negative_numbers = true)]
 pub struct InfoArgs {
     /// The lattice: square, tri4, cubic, tri3 or hex.
-    #[arg(long, default_value = "square", value_parser = lattice)]
+    #[arg(long, default_value_t = LatticeKind::Square)]
     pub lattice: LatticeKind,
     /// The figures.
     #[arg(required = true, num_args = 1.., value_name = "FIGURE")]
@@ -271,7 +272,7 @@ impl SolveArgs {
                 KeepArg::Candidates(n) => Some(*n),
                 KeepArg::Regions(..) => None,
             })
-            .unwrap_or(30)
+            .unwrap_or(defaults().keep)
     }
 
     /// The run these flags ask for (checked by the engine).
@@ -304,5 +305,43 @@ impl SolveArgs {
             rank: self.rank.unwrap_or_default(),
             ..dissect_engine::RunConfig::default()
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::Parser;
+
+    use super::{Cli, Command};
+
+    /// The flags' defaults are the engine's, so `dissect solve` with no
+    /// flag runs exactly `RunConfig::default()`.
+    #[test]
+    fn solve_without_flags_runs_the_engine_defaults() {
+        let cli = Cli::try_parse_from(["dissect", "solve", "a.txt", "b.txt"]).expect("parses");
+        let Command::Solve(args) = cli.command else {
+            panic!("not solve: {:?}", cli.command);
+        };
+        assert_eq!(args.run_config(), dissect_engine::RunConfig::default());
+    }
+
+    /// Every command reads `--lattice` with the core's one parser.
+    #[test]
+    fn lattice_names_are_the_cores() {
+        for kind in dissect_core::LatticeKind::ALL {
+            let cli = Cli::try_parse_from(["dissect", "info", "--lattice", kind.name(), "a.txt"])
+                .expect("parses");
+            let Command::Info(args) = cli.command else {
+                panic!("not info");
+            };
+            assert_eq!(args.lattice, kind);
+        }
+        let e = Cli::try_parse_from(["dissect", "info", "--lattice", "hexagon", "a.txt"])
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("unknown lattice \"hexagon\" (expected square, tri4, cubic, tri3 or hex)"),
+            "{e}"
+        );
     }
 }

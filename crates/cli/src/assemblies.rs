@@ -18,7 +18,7 @@ use crate::{input, InputError, Status};
 #[derive(Args, Debug)]
 pub struct AssembliesArgs {
     /// The lattice (default: the solution's).
-    #[arg(long, value_parser = lattice)]
+    #[arg(long)]
     pub lattice: Option<LatticeKind>,
     /// The solution JSON whose pieces are counted (as cut from its first figure).
     #[arg(long, value_name = "S.json")]
@@ -32,11 +32,6 @@ pub struct AssembliesArgs {
     /// The figures to tile (any figures of the pieces' total area).
     #[arg(required = true, num_args = 1.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
-}
-
-fn lattice(s: &str) -> Result<LatticeKind, String> {
-    s.parse()
-        .map_err(|e: dissect_core::lattice::UnknownLattice| e.to_string())
 }
 
 static STOP: AtomicBool = AtomicBool::new(false);

@@ -14,16 +14,11 @@ use crate::{input, InputError, Status};
 /// Raised by Ctrl-C.
 static STOP: AtomicBool = AtomicBool::new(false);
 
-fn lattice(s: &str) -> Result<LatticeKind, String> {
-    s.parse()
-        .map_err(|e: dissect_core::lattice::UnknownLattice| e.to_string())
-}
-
 #[derive(clap::Args, Debug)]
 #[command(allow_negative_numbers = true)]
 pub struct BoundArgs {
     /// The lattice: square, tri4, cubic, tri3 or hex.
-    #[arg(long, default_value = "square", value_parser = lattice)]
+    #[arg(long, default_value_t = LatticeKind::Square)]
     pub lattice: LatticeKind,
     /// Do not turn 2D pieces over (rotations only).
     #[arg(long)]

@@ -16,11 +16,6 @@ use dissect_render::{RenderError, Scene};
 use crate::args::{finite, non_negative, positive, whole_usize};
 use crate::{input, output, InputError, Status};
 
-fn lattice(s: &str) -> Result<LatticeKind, String> {
-    s.parse()
-        .map_err(|e: dissect_core::lattice::UnknownLattice| e.to_string())
-}
-
 #[derive(Args, Debug)]
 #[command(allow_negative_numbers = true)]
 pub struct RenderArgs {
@@ -65,7 +60,7 @@ pub struct RasterizeArgs {
     #[arg(required = true, num_args = 1.., value_name = "PICTURE")]
     pub pictures: Vec<PathBuf>,
     /// The lattice: square, tri4, cubic, tri3 or hex.
-    #[arg(long, default_value = "square", value_parser = lattice)]
+    #[arg(long, default_value_t = LatticeKind::Square)]
     pub lattice: LatticeKind,
     /// Exactly this many cells (triangles for tri4); scale and threshold are searched.
     #[arg(long, value_name = "N", value_parser = whole_usize::<1>)]

@@ -239,7 +239,7 @@ async fn start_solve(
     // Every other rule on the settings is the engine's.
     let defaults = RunConfig::default();
     let options = RunOptions::new(RunConfig {
-        mirror: req.mirror.unwrap_or(true),
+        mirror: req.mirror.unwrap_or(defaults.mirror),
         seed: req.seed.unwrap_or(defaults.seed),
         threads: s.limits.threads(),
         area_weight: req.area_weight.unwrap_or(defaults.area_weight),
