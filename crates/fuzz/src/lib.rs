@@ -418,35 +418,9 @@ mod targets {
     }
 
     pub fn mesh() -> Target {
-        let v = |x: u8, y: u8, z: u8| [x as f32, y as f32, z as f32];
-        let quads = [
-            [v(0, 0, 0), v(0, 1, 0), v(1, 1, 0), v(1, 0, 0)],
-            [v(0, 0, 1), v(1, 0, 1), v(1, 1, 1), v(0, 1, 1)],
-            [v(0, 0, 0), v(1, 0, 0), v(1, 0, 1), v(0, 0, 1)],
-            [v(0, 1, 0), v(0, 1, 1), v(1, 1, 1), v(1, 1, 0)],
-            [v(0, 0, 0), v(0, 0, 1), v(0, 1, 1), v(0, 1, 0)],
-            [v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1)],
-        ];
-        let tris: Vec<[[f32; 3]; 3]> = quads
-            .iter()
-            .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
-            .collect();
-        let mut ascii = String::from("solid c\n");
-        let mut binary = vec![0u8; 80];
-        binary.extend_from_slice(&(tris.len() as u32).to_le_bytes());
-        for t in &tris {
-            ascii += "facet normal 0 0 0\nouter loop\n";
-            binary.extend_from_slice(&[0u8; 12]);
-            for p in t {
-                ascii += &format!("vertex {} {} {}\n", p[0], p[1], p[2]);
-                for c in p {
-                    binary.extend_from_slice(&c.to_le_bytes());
-                }
-            }
-            binary.extend_from_slice(&[0, 0]);
-            ascii += "endloop\nendfacet\n";
-        }
-        ascii += "endsolid c\n";
+        let tris = dissect_testkit::box_triangles([0.0; 3], [1.0; 3]);
+        let ascii = dissect_testkit::ascii_stl("c", &tris);
+        let binary = dissect_testkit::binary_stl(&tris);
         let mut k = 0usize;
         Target {
             name: "mesh",

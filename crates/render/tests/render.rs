@@ -601,26 +601,7 @@ fn rasterize_bad_input_gets_clear_errors() {
 
 /// A closed box mesh from `lo` to `hi`, triangles facing outward.
 fn box_stl(lo: [f64; 3], hi: [f64; 3]) -> Vec<u8> {
-    let p = |x: usize, y: usize, z: usize| {
-        [
-            if x == 0 { lo[0] } else { hi[0] },
-            if y == 0 { lo[1] } else { hi[1] },
-            if z == 0 { lo[2] } else { hi[2] },
-        ]
-    };
-    let quads = [
-        [p(0, 0, 0), p(0, 1, 0), p(1, 1, 0), p(1, 0, 0)],
-        [p(0, 0, 1), p(1, 0, 1), p(1, 1, 1), p(0, 1, 1)],
-        [p(0, 0, 0), p(1, 0, 0), p(1, 0, 1), p(0, 0, 1)],
-        [p(0, 1, 0), p(0, 1, 1), p(1, 1, 1), p(1, 1, 0)],
-        [p(0, 0, 0), p(0, 0, 1), p(0, 1, 1), p(0, 1, 0)],
-        [p(1, 0, 0), p(1, 1, 0), p(1, 1, 1), p(1, 0, 1)],
-    ];
-    let tris = quads
-        .iter()
-        .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
-        .collect();
-    Mesh::new(tris).to_binary_stl("box")
+    Mesh::new(dissect_testkit::box_triangles(lo, hi)).to_binary_stl("box")
 }
 
 #[test]

@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 use axum::body::Body;
 use axum::http::{Request, StatusCode};
 use axum::Router;
+use dissect_testkit::{nested_svg, png_claiming, HUGE_SVG};
 use dissect_web::{router, router_with_access, Access, Limits};
 use http_body_util::BodyExt;
 use serde_json::{json, Value};
@@ -156,53 +157,11 @@ async fn other_sites_cannot_rasterize() {
     assert_eq!(send(&app, req).await.0, StatusCode::FORBIDDEN);
 }
 
-/// CRC-32 (as PNG uses it).
-fn crc32(data: &[u8]) -> u32 {
-    let mut c = 0xFFFF_FFFFu32;
-    for &b in data {
-        c ^= b as u32;
-        for _ in 0..8 {
-            c = if c & 1 == 1 {
-                0xEDB8_8320 ^ (c >> 1)
-            } else {
-                c >> 1
-            };
-        }
-    }
-    !c
-}
-
-fn png_claiming(w: u32, h: u32) -> Vec<u8> {
-    let mut out = b"\x89PNG\r\n\x1a\n".to_vec();
-    let mut chunk = |kind: &[u8], data: &[u8]| {
-        out.extend_from_slice(&(data.len() as u32).to_be_bytes());
-        let mut body = kind.to_vec();
-        body.extend_from_slice(data);
-        out.extend_from_slice(&body);
-        out.extend_from_slice(&crc32(&body).to_be_bytes());
-    };
-    let mut ihdr = Vec::new();
-    ihdr.extend_from_slice(&w.to_be_bytes());
-    ihdr.extend_from_slice(&h.to_be_bytes());
-    ihdr.extend_from_slice(&[8, 0, 0, 0, 0]);
-    chunk(b"IHDR", &ihdr);
-    chunk(
-        b"IDAT",
-        &[0x78, 0x01, 0x01, 0x05, 0x00, 0xFA, 0xFF, 0, 0, 0, 0, 0],
-    );
-    chunk(b"IEND", &[]);
-    out
-}
-
 #[tokio::test]
 async fn picture_bombs_get_413_and_the_server_keeps_serving() {
     let app = app();
-    let big = br#"<svg xmlns="http://www.w3.org/2000/svg" width="1e9" height="1e9"><rect width="1e9" height="1e9"/></svg>"#;
-    let nested = format!(
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">{}<rect width="5" height="5"/>{}</svg>"#,
-        "<g>".repeat(50_000),
-        "</g>".repeat(50_000)
-    );
+    let big = HUGE_SVG.as_bytes();
+    let nested = nested_svg(50_000);
     // The 1e9 SVG is drawn small: 4 cells of it are fine.
     let (s, _, b) = send(&app, picture("image/svg+xml", None, None, big)).await;
     assert_eq!(s, StatusCode::OK, "{}", String::from_utf8_lossy(&b));

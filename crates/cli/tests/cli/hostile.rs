@@ -4,6 +4,10 @@
 
 use std::time::Duration;
 
+use dissect_testkit::{
+    ascii_stl, box_triangles, jpeg_claiming, nested_svg, png_claiming, HUGE_SVG,
+};
+
 use crate::support::{Run, Sandbox};
 
 const LIMIT: Duration = Duration::from_secs(30);
@@ -28,99 +32,22 @@ fn refused(sb: &Sandbox, args: &[&str], says: &[&str]) -> Run {
     run
 }
 
-/// CRC-32 (as PNG uses it).
-fn crc32(data: &[u8]) -> u32 {
-    let mut c = 0xFFFF_FFFFu32;
-    for &b in data {
-        c ^= b as u32;
-        for _ in 0..8 {
-            c = if c & 1 == 1 {
-                0xEDB8_8320 ^ (c >> 1)
-            } else {
-                c >> 1
-            };
-        }
-    }
-    !c
-}
-
-/// A PNG whose header says `w`×`h` pixels, followed by a few bytes of
-/// compressed data: a decoder that trusts the header allocates w·h·4 bytes.
-fn png_claiming(w: u32, h: u32) -> Vec<u8> {
-    let mut out = b"\x89PNG\r\n\x1a\n".to_vec();
-    let mut chunk = |kind: &[u8], data: &[u8]| {
-        out.extend_from_slice(&(data.len() as u32).to_be_bytes());
-        let mut body = kind.to_vec();
-        body.extend_from_slice(data);
-        out.extend_from_slice(&body);
-        out.extend_from_slice(&crc32(&body).to_be_bytes());
-    };
-    let mut ihdr = Vec::new();
-    ihdr.extend_from_slice(&w.to_be_bytes());
-    ihdr.extend_from_slice(&h.to_be_bytes());
-    ihdr.extend_from_slice(&[8, 0, 0, 0, 0]);
-    chunk(b"IHDR", &ihdr);
-    // zlib stream of a few zero rows (stored block), then the end.
-    chunk(
-        b"IDAT",
-        &[0x78, 0x01, 0x01, 0x05, 0x00, 0xFA, 0xFF, 0, 0, 0, 0, 0],
-    );
-    chunk(b"IEND", &[]);
-    out
-}
-
-/// A baseline JPEG header (SOF0) saying `w`×`h`, with nothing after it.
-fn jpeg_claiming(w: u16, h: u16) -> Vec<u8> {
-    let mut out = vec![0xFF, 0xD8, 0xFF, 0xC0, 0x00, 0x11, 0x08];
-    out.extend_from_slice(&h.to_be_bytes());
-    out.extend_from_slice(&w.to_be_bytes());
-    out.extend_from_slice(&[3, 1, 0x22, 0, 2, 0x11, 1, 3, 0x11, 1, 0xFF, 0xD9]);
-    out
-}
-
 /// A closed ASCII STL: the unit cube scaled by `s`.
 fn cube_stl(s: f64) -> String {
-    let v = |x: u8, y: u8, z: u8| [x as f64 * s, y as f64 * s, z as f64 * s];
-    let quads = [
-        [v(0, 0, 0), v(0, 1, 0), v(1, 1, 0), v(1, 0, 0)],
-        [v(0, 0, 1), v(1, 0, 1), v(1, 1, 1), v(0, 1, 1)],
-        [v(0, 0, 0), v(1, 0, 0), v(1, 0, 1), v(0, 0, 1)],
-        [v(0, 1, 0), v(0, 1, 1), v(1, 1, 1), v(1, 1, 0)],
-        [v(0, 0, 0), v(0, 0, 1), v(0, 1, 1), v(0, 1, 0)],
-        [v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1)],
-    ];
-    let mut out = String::from("solid cube\n");
-    for q in quads {
-        for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
-            out += "facet normal 0 0 0\nouter loop\n";
-            for p in t {
-                out += &format!("vertex {} {} {}\n", p[0], p[1], p[2]);
-            }
-            out += "endloop\nendfacet\n";
-        }
-    }
-    out + "endsolid cube\n"
+    ascii_stl("cube", &box_triangles([0.0; 3], [s; 3]))
 }
-
-const BIG_SVG: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="1e9" height="1e9"><rect width="1e9" height="1e9"/></svg>"#;
 
 #[test]
 fn svg_pictures_with_huge_sizes_or_deep_nesting_are_refused() {
     let sb = Sandbox::new();
-    let big = sb.write("big.svg", BIG_SVG);
-    assert!(BIG_SVG.len() < 112);
+    let big = sb.write("big.svg", HUGE_SVG);
+    assert!(HUGE_SVG.len() < 112);
     refused(&sb, &["rasterize", &big], &["big.svg: too large", "grid"]);
     // Asked for a cell count, the same picture is drawn small: a success.
     let run = sb.run_capped(&["rasterize", &big, "--cells", "9"], LIMIT);
     run.expect_code(0);
     assert_eq!(run.stdout, "###\n###\n###\n");
-    let n = 50_000;
-    let nested = format!(
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">{}<rect width="5" height="5"/>{}</svg>"#,
-        "<g>".repeat(n),
-        "</g>".repeat(n)
-    );
-    let nested = sb.write("nested.svg", &nested);
+    let nested = sb.write("nested.svg", &nested_svg(50_000));
     refused(
         &sb,
         &["rasterize", &nested, "--cells", "4"],
@@ -247,6 +174,24 @@ fn endless_or_huge_inputs_are_refused_without_reading_them_whole() {
         &["info", "--lattice", "tri4", &big],
         &["big.txt: too large", "1 MiB"],
     );
+}
+
+/// The largest figure the cap lets in, 1 MiB of `tri4` text (4 million
+/// triangles), is described within seconds: components and holes are found
+/// by a search in the sorted cells, not a hash table (it took 45 s).
+#[test]
+fn info_on_the_largest_figure_allowed_is_quick() {
+    let sb = Sandbox::new();
+    let text = ("f".repeat(1023) + "\n").repeat(1024);
+    assert_eq!(text.len(), 1 << 20);
+    let big = sb.write("big.txt", &text);
+    let run = sb.run_capped(&["info", "--lattice", "tri4", &big], LIMIT);
+    run.expect_code(0);
+    assert_eq!(
+        run.stdout,
+        "big.txt: 4190208 cells (tri4), 1 component, 0 holes, bounding box 1023x1024 at (0, 0)\n"
+    );
+    assert!(run.elapsed < Duration::from_secs(15), "{:?}", run.elapsed);
 }
 
 #[test]
