@@ -1,6 +1,6 @@
 //! `dissect.Figure`: a set of cells on one lattice, with an optional name.
 
-use dissect_core::io::{format_figure, parse_figure, Dissection};
+use dissect_core::io::{format_figure, parse_figure};
 use dissect_core::{Cell, Figure, LatticeKind};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
@@ -25,18 +25,7 @@ pub(crate) fn lattice(py: Python<'_>, name: &str) -> PyResult<LatticeKind> {
 /// Cells as written in solution files: `[x, y]` or `[x, y, t|z]`, the
 /// form `dissect_core::io` gives each lattice.
 pub(crate) fn cells_as_json(lattice: LatticeKind, cells: &[Cell]) -> Vec<Vec<i64>> {
-    let d = Dissection {
-        lattice,
-        mirror: false,
-        names: vec![String::new()],
-        pieces: vec![vec![cells.to_vec()]],
-    };
-    d.to_file(serde_json::Map::new())
-        .figures
-        .into_iter()
-        .next()
-        .and_then(|f| f.pieces.into_iter().next())
-        .unwrap_or_default()
+    cells.iter().map(|c| lattice.cell_coords(*c)).collect()
 }
 
 /// Cells as a Python list of tuples.

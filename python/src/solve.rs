@@ -3,8 +3,9 @@
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
 
-use dissect_core::io::{parse_solution, Dissection};
+use dissect_core::io::parse_solution;
 use dissect_core::solver::{self, Batch, Executor, Exploration};
+use dissect_core::Dissection;
 use dissect_core::{Figure, LatticeKind};
 use dissect_engine::{End, EngineError, RunConfig, RunOptions, Strategy};
 use dissect_exact::{ExactOptions, Mode};
@@ -361,7 +362,7 @@ pub(crate) fn solve<'py>(
     };
     let out = PyDict::new(py);
     out.set_item("lattice", lattice.name())?;
-    out.set_item("mirror", best.dissection().mirror)?;
+    out.set_item("mirror", best.dissection().mirror())?;
     out.set_item("names", names.clone())?;
     out.set_item("pieces", pieces_to_py(py, lattice, best.pieces())?)?;
     out.set_item("level", report.level)?;
@@ -519,11 +520,7 @@ pub(crate) fn solution_json(
                 .collect::<PyResult<Vec<_>>>()
         })
         .collect::<PyResult<Vec<_>>>()?;
-    let d = Dissection {
-        lattice: kind,
-        mirror,
-        names,
-        pieces,
-    };
+    let d = Dissection::new(kind, mirror, names, pieces)
+        .map_err(|e| error(py, Kind::Option, e.to_string()))?;
     Ok(d.to_file(extra).to_json())
 }

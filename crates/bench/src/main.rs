@@ -11,9 +11,9 @@ use dissect_bench::manifest::{Instance, Manifest};
 use dissect_bench::report::{self, InstanceResult, ScaleStep, Style};
 use dissect_bench::run::SeedRun;
 use dissect_bench::{cpu, scale, Plan};
-use dissect_core::io::{format_figure, Dissection};
+use dissect_core::io::format_figure;
 use dissect_core::solver::Options;
-use dissect_core::{Figure, LatticeKind};
+use dissect_core::{Dissection, Figure, LatticeKind};
 
 /// Runs every instance of a manifest over several seeds with the dissect
 /// solver, verifies every dissection, and prints a table.
@@ -356,12 +356,12 @@ fn save(
 ) -> Result<()> {
     for r in runs {
         let Some(found) = &r.found else { continue };
-        let d = Dissection {
-            lattice: instance.lattice(),
-            mirror: options.mirror && instance.lattice().lattice().supports_mirror(),
-            names: instance.files.clone(),
-            pieces: found.pieces.clone(),
-        };
+        let d = Dissection::new(
+            instance.lattice(),
+            options.mirror,
+            instance.files.clone(),
+            found.pieces.clone(),
+        )?;
         let mut extra = serde_json::Map::new();
         extra.insert("seed".into(), r.seed.into());
         extra.insert("seconds".into(), r.total.as_secs_f64().into());

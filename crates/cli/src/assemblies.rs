@@ -38,8 +38,8 @@ static STOP: AtomicBool = AtomicBool::new(false);
 
 pub fn run(args: AssembliesArgs) -> Result<Status> {
     let (_, dissection) = input::solution(&args.solution)?;
-    input::check_solution_lattice(&args.solution, dissection.lattice, args.lattice)?;
-    let lattice = dissection.lattice;
+    input::check_solution_lattice(&args.solution, dissection.lattice(), args.lattice)?;
+    let lattice = dissection.lattice();
     let deadline = match args.time_limit {
         Some(t) if !(t.is_finite() && t > 0.0) => {
             return Err(InputError(format!(
@@ -51,8 +51,8 @@ pub fn run(args: AssembliesArgs) -> Result<Status> {
         None => None,
     };
     let figures = input::figures(&args.figures, lattice)?;
-    let pieces = dissection.pieces.first().cloned().unwrap_or_default();
-    let set = PieceSet::new(Motions::new(lattice, dissection.mirror), &pieces)
+    let pieces = dissection.pieces().first().cloned().unwrap_or_default();
+    let set = PieceSet::new(Motions::new(lattice, dissection.mirror()), &pieces)
         .map_err(|e| InputError(format!("{}: {e}", args.solution.display())))?;
     let _ = ctrlc::set_handler(|| STOP.store(true, Ordering::SeqCst));
     let terminal = std::io::stderr().is_terminal();

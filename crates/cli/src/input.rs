@@ -4,7 +4,8 @@
 use std::path::Path;
 
 use anyhow::Result;
-use dissect_core::io::{parse_figure, parse_solution, Dissection, ParseErrorKind, SolutionFile};
+use dissect_core::io::{parse_figure, parse_solution, ParseErrorKind, SolutionFile};
+use dissect_core::Dissection;
 use dissect_core::{Figure, LatticeKind};
 
 use crate::InputError;

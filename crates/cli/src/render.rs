@@ -319,7 +319,7 @@ pub fn voxelize(args: VoxelizeArgs) -> Result<Status> {
 }
 
 /// Writes the SVG views of a solved dissection into `dir` (for `solve --render DIR`).
-pub fn write_views(dir: &Path, d: &dissect_core::io::Dissection) -> Result<()> {
+pub fn write_views(dir: &Path, d: &dissect_core::Dissection) -> Result<()> {
     let scene = Scene::new(d).map_err(|e| anyhow::anyhow!("{e}"))?;
     output_dir(dir)?;
     let path = dir.join("dissection.svg");

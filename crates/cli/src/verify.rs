@@ -10,8 +10,8 @@ use crate::{input, progress, Status};
 
 pub fn run(args: VerifyArgs) -> Result<Status> {
     let (_, dissection) = input::solution(&args.solution)?;
-    input::check_solution_lattice(&args.solution, dissection.lattice, args.lattice)?;
-    let lattice = dissection.lattice;
+    input::check_solution_lattice(&args.solution, dissection.lattice(), args.lattice)?;
+    let lattice = dissection.lattice();
     let figures = input::figures(&args.figures, lattice)?;
     input::check_equal_areas(&args.figures, &figures)?;
     let mut out = String::new();
@@ -31,14 +31,14 @@ pub fn run(args: VerifyArgs) -> Result<Status> {
                 _ = writeln!(out, "... {} more", violations.len() - 10);
             }
             let given: Vec<String> = args.figures.iter().map(|p| input::file_name(p)).collect();
-            if dissection.names.iter().all(|n| !n.is_empty())
-                && dissection.names != given
-                && dissection.names.len() == given.len()
+            if dissection.names().iter().all(|n| !n.is_empty())
+                && dissection.names() != given
+                && dissection.names().len() == given.len()
             {
                 _ = writeln!(
                     out,
                     "note: the solution lists the figures {}; they were given as {}",
-                    dissection.names.join(", "),
+                    dissection.names().join(", "),
                     given.join(", ")
                 );
             }

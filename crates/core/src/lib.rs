@@ -6,6 +6,7 @@
 //! the [`solver::Observer`] trait.
 
 pub mod ascii;
+pub mod dissection;
 pub(crate) mod distance;
 pub mod figure;
 pub mod io;
@@ -18,6 +19,7 @@ pub mod solver;
 pub mod transform;
 pub mod verify;
 
+pub use dissection::Dissection;
 pub use figure::Figure;
 pub use lattice::{Cell, Lattice, LatticeKind};
 pub use solver::{solve, solve_anytime, Options};

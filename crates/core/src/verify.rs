@@ -7,8 +7,8 @@
 
 use std::collections::{BTreeSet, HashSet};
 
+use crate::dissection::Dissection;
 use crate::figure::Figure;
-use crate::io::Dissection;
 use crate::lattice::{Cell, LatticeKind, Point};
 
 /// One reason a dissection is invalid.
@@ -97,20 +97,20 @@ pub enum Violation {
 /// pieces, or every violation found.
 pub fn verify(d: &Dissection, figures: &[Figure]) -> Result<usize, Vec<Violation>> {
     let mut v = Vec::new();
-    let lattice = figures.first().map_or(d.lattice, |f| f.lattice());
-    if d.lattice != lattice {
+    let lattice = figures.first().map_or(d.lattice(), |f| f.lattice());
+    if d.lattice() != lattice {
         return Err(vec![Violation::LatticeMismatch {
-            found: d.lattice,
+            found: d.lattice(),
             expected: lattice,
         }]);
     }
-    if d.pieces.len() != figures.len() {
+    if d.pieces().len() != figures.len() {
         return Err(vec![Violation::FigureCount {
-            found: d.pieces.len(),
+            found: d.pieces().len(),
             expected: figures.len(),
         }]);
     }
-    let counts: Vec<usize> = d.pieces.iter().map(|p| p.len()).collect();
+    let counts: Vec<usize> = d.pieces().iter().map(|p| p.len()).collect();
     if counts.iter().any(|c| *c != counts[0]) {
         return Err(vec![Violation::PieceCount(counts)]);
     }
@@ -119,7 +119,7 @@ pub fn verify(d: &Dissection, figures: &[Figure]) -> Result<usize, Vec<Violation
         return Err(vec![Violation::NoPieces]);
     }
     let l = lattice.lattice();
-    for (f, (fig, pieces)) in figures.iter().zip(&d.pieces).enumerate() {
+    for (f, (fig, pieces)) in figures.iter().zip(d.pieces()).enumerate() {
         let mut seen: HashSet<Cell> = HashSet::new();
         for (i, piece) in pieces.iter().enumerate() {
             if piece.is_empty() {
@@ -163,14 +163,14 @@ pub fn verify(d: &Dissection, figures: &[Figure]) -> Result<usize, Vec<Violation
             });
         }
     }
-    let mirror = d.mirror && l.supports_mirror();
+    let mirror = d.mirror() && l.supports_mirror();
     let mats = match lattice {
         LatticeKind::Tri3 | LatticeKind::Hex => own_hexagonal_symmetries(mirror),
         _ => own_symmetries(l.dim(), mirror),
     };
     let modulus = l.modulus();
     for i in 0..counts[0] {
-        let base: Vec<Point> = d.pieces[0][i].iter().map(|c| l.to_point(*c)).collect();
+        let base: Vec<Point> = d.pieces()[0][i].iter().map(|c| l.to_point(*c)).collect();
         if base.is_empty() {
             continue;
         }
@@ -178,8 +178,8 @@ pub fn verify(d: &Dissection, figures: &[Figure]) -> Result<usize, Vec<Violation
             .iter()
             .map(|m| canonical(base.iter().map(|p| mul(m, *p)).collect(), modulus))
             .collect();
-        for f in 1..d.pieces.len() {
-            let other: Vec<Point> = d.pieces[f][i].iter().map(|c| l.to_point(*c)).collect();
+        for f in 1..d.pieces().len() {
+            let other: Vec<Point> = d.pieces()[f][i].iter().map(|c| l.to_point(*c)).collect();
             if other.is_empty() {
                 continue;
             }
@@ -307,6 +307,25 @@ fn canonical(mut pts: Vec<Point>, modulus: i32) -> Vec<Point> {
     out
 }
 
+/// Cells that are not of the lattice, as the violations they make (such a
+/// cell lies in no figure).
+fn bad_cells(lattice: LatticeKind, pieces: &[Vec<Vec<Cell>>]) -> Vec<Violation> {
+    let l = lattice.lattice();
+    let mut v = Vec::new();
+    for (figure, fp) in pieces.iter().enumerate() {
+        for (piece, cells) in fp.iter().enumerate() {
+            for &cell in cells.iter().filter(|c| !l.is_cell(**c)) {
+                v.push(Violation::OutsideFigure {
+                    figure,
+                    piece,
+                    cell,
+                });
+            }
+        }
+    }
+    v
+}
+
 /// Convenience for callers holding cells per piece: whether the labelling
 /// `pieces[f][i]` covers and matches, as [`verify`].
 pub fn verify_pieces(
@@ -315,11 +334,9 @@ pub fn verify_pieces(
     figures: &[Figure],
     pieces: &[Vec<Vec<Cell>>],
 ) -> Result<usize, Vec<Violation>> {
-    let d = Dissection {
-        lattice,
-        mirror,
-        names: figures.iter().map(|_| String::new()).collect(),
-        pieces: pieces.to_vec(),
-    };
-    verify(&d, figures)
+    match Dissection::unnamed(lattice, mirror, pieces.to_vec()) {
+        Ok(d) => verify(&d, figures),
+        // A cell that is not of the lattice lies in no figure of it.
+        Err(_) => Err(bad_cells(lattice, pieces)),
+    }
 }

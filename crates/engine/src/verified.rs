@@ -1,7 +1,7 @@
 //! A dissection that passed the independent verifier.
 
-use dissect_core::io::Dissection;
 use dissect_core::verify::verify;
+use dissect_core::Dissection;
 use dissect_core::{Cell, Figure, LatticeKind};
 
 /// A dissection checked by [`dissect_core::verify`] against its figures.
@@ -24,12 +24,8 @@ impl Verified {
         figures: &[Figure],
         pieces: Vec<Vec<Vec<Cell>>>,
     ) -> Result<Verified, String> {
-        let dissection = Dissection {
-            lattice,
-            mirror: mirror && lattice.lattice().supports_mirror(),
-            names,
-            pieces,
-        };
+        let dissection =
+            Dissection::new(lattice, mirror, names, pieces).map_err(|e| e.to_string())?;
         match verify(&dissection, figures) {
             Ok(_) => Ok(Verified { dissection }),
             Err(v) => Err(v
@@ -45,7 +41,7 @@ impl Verified {
 
     /// `pieces[f][i]`: the cells of piece `i` in figure `f`.
     pub fn pieces(&self) -> &[Vec<Vec<Cell>>] {
-        &self.dissection.pieces
+        self.dissection.pieces()
     }
 
     /// The number of pieces.
@@ -56,7 +52,7 @@ impl Verified {
     /// Each piece's area.
     pub fn areas(&self) -> Vec<usize> {
         self.dissection
-            .pieces
+            .pieces()
             .first()
             .map_or(Vec::new(), |p| p.iter().map(Vec::len).collect())
     }

@@ -56,7 +56,8 @@ fn main() {
             dissect_core::io::parse_solution(&text)
                 .expect("a solution")
                 .1
-                .pieces
+                .pieces()
+                .to_vec()
         }
         None => match heuristic(&figures, seed, seconds) {
             Some(p) => p,

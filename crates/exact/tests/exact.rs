@@ -7,8 +7,9 @@ use std::collections::HashSet;
 use std::sync::atomic::{AtomicBool, AtomicUsize};
 
 use dissect_core::figure::components_of;
-use dissect_core::io::{parse_figure, Dissection};
+use dissect_core::io::parse_figure;
 use dissect_core::lattice::Point;
+use dissect_core::Dissection;
 use dissect_core::{Cell, Figure, LatticeKind};
 use dissect_exact::{cheap_bound, search, ExactOptions, ExactOutcome, Mode, Reason};
 
@@ -391,12 +392,13 @@ fn python_verifier_accepts_a_sat_dissection() {
         std::fs::write(&p, t).unwrap();
         paths.push(p);
     }
-    let d = Dissection {
-        lattice: LatticeKind::Square,
-        mirror: true,
-        names: vec!["f0.txt".into(), "f1.txt".into()],
+    let d = Dissection::new(
+        LatticeKind::Square,
+        true,
+        vec!["f0.txt".into(), "f1.txt".into()],
         pieces,
-    };
+    )
+    .unwrap();
     let sol = dir.path().join("s.json");
     std::fs::write(&sol, d.to_file(Default::default()).to_json()).unwrap();
     let verifier =

@@ -7,7 +7,8 @@ use std::collections::BTreeMap;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
-use dissect_core::io::{parse_figure, Dissection};
+use dissect_core::io::parse_figure;
+use dissect_core::Dissection;
 use dissect_core::{Cell, Figure, LatticeKind};
 use dissect_exact::{repair, repair_report, ExactError, RepairOptions};
 
@@ -331,12 +332,13 @@ fn python_verifier_accepts_a_repair() {
         std::fs::write(&p, plain).unwrap();
         paths.push(p);
     }
-    let d = Dissection {
-        lattice: LatticeKind::Square,
-        mirror: true,
-        names: vec!["f0.txt".into(), "f1.txt".into()],
+    let d = Dissection::new(
+        LatticeKind::Square,
+        true,
+        vec!["f0.txt".into(), "f1.txt".into()],
         pieces,
-    };
+    )
+    .unwrap();
     let sol = dir.path().join("s.json");
     std::fs::write(&sol, d.to_file(Default::default()).to_json()).unwrap();
     let verifier =

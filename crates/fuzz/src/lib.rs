@@ -336,12 +336,12 @@ mod targets {
                 };
                 // Drawn only when small: the drawing's size follows the coordinates.
                 let small = d
-                    .pieces
+                    .pieces()
                     .iter()
                     .flatten()
                     .flatten()
                     .all(|c| c.iter().all(|v| v.abs() < 64))
-                    && d.pieces
+                    && d.pieces()
                         .iter()
                         .map(|f| f.iter().map(Vec::len).sum::<usize>())
                         .sum::<usize>()

@@ -5,7 +5,8 @@
 
 use std::collections::{HashMap, HashSet, VecDeque};
 
-use dissect_core::io::{parse_figure, parse_solution, Dissection};
+use dissect_core::io::{parse_figure, parse_solution};
+use dissect_core::Dissection;
 use dissect_core::{Cell, LatticeKind};
 
 use crate::colour::{piece_colour, Rgb};
@@ -35,14 +36,14 @@ pub struct Scene {
 impl Scene {
     /// A scene of a dissection (not checked against any figure).
     pub fn new(d: &Dissection) -> Result<Scene, RenderError> {
-        if d.pieces.is_empty() {
+        if d.pieces().is_empty() {
             return Err(RenderError::Mismatch("the solution has no figure".into()));
         }
-        let n = d.pieces[0].len();
+        let n = d.pieces()[0].len();
         if n == 0 {
             return Err(RenderError::Mismatch("the solution has no piece".into()));
         }
-        for (f, fp) in d.pieces.iter().enumerate() {
+        for (f, fp) in d.pieces().iter().enumerate() {
             if fp.len() != n {
                 return Err(RenderError::Mismatch(format!(
                     "figure {} has {} pieces, figure 1 has {n}",
@@ -58,26 +59,30 @@ impl Scene {
                 )));
             }
         }
-        let two_d = d.lattice != LatticeKind::Cubic;
+        let two_d = d.lattice() != LatticeKind::Cubic;
         let outlines = if two_d {
-            d.pieces
+            d.pieces()
                 .iter()
-                .map(|fp| fp.iter().map(|p| Outline::of_cells(d.lattice, p)).collect())
+                .map(|fp| {
+                    fp.iter()
+                        .map(|p| Outline::of_cells(d.lattice(), p))
+                        .collect()
+                })
                 .collect()
         } else {
             Vec::new()
         };
         let figure_outlines = if two_d {
-            d.pieces
+            d.pieces()
                 .iter()
-                .map(|fp| Outline::of_cells(d.lattice, &fp.concat()))
+                .map(|fp| Outline::of_cells(d.lattice(), &fp.concat()))
                 .collect()
         } else {
             Vec::new()
         };
-        let names = (0..d.pieces.len())
+        let names = (0..d.pieces().len())
             .map(|f| {
-                d.names
+                d.names()
                     .get(f)
                     .filter(|s| !s.is_empty())
                     .cloned()
@@ -85,9 +90,9 @@ impl Scene {
             })
             .collect();
         Ok(Scene {
-            lattice: d.lattice,
+            lattice: d.lattice(),
             names,
-            pieces: d.pieces.clone(),
+            pieces: d.pieces().to_vec(),
             outlines,
             figure_outlines,
             ids: (0..n).collect(),
@@ -102,10 +107,10 @@ impl Scene {
         // The shape first (figures, pieces, counts), with its own messages.
         let scene = Scene::new(d)?;
         let figs = d
-            .pieces
+            .pieces()
             .iter()
             .map(|fp| {
-                dissect_core::Figure::new(d.lattice, fp.iter().flatten().copied())
+                dissect_core::Figure::new(d.lattice(), fp.iter().flatten().copied())
                     .map_err(|e| RenderError::Invalid(e.to_string()))
             })
             .collect::<Result<Vec<_>, _>>()?;
@@ -123,10 +128,10 @@ impl Scene {
         if figures.is_empty() {
             return Scene::verified(&d);
         }
-        if figures.len() != d.pieces.len() {
+        if figures.len() != d.pieces().len() {
             return Err(RenderError::Mismatch(format!(
                 "the solution has {} figures, {} were given",
-                d.pieces.len(),
+                d.pieces().len(),
                 figures.len()
             )));
         }
@@ -134,7 +139,7 @@ impl Scene {
             .iter()
             .enumerate()
             .map(|(index, t)| {
-                parse_figure(t, d.lattice).map_err(|error| RenderError::Figure { index, error })
+                parse_figure(t, d.lattice()).map_err(|error| RenderError::Figure { index, error })
             })
             .collect::<Result<Vec<_>, _>>()?;
         if let Err(v) = dissect_core::verify::verify(&d, &figs) {

@@ -120,7 +120,7 @@ fn escape(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use dissect_core::io::Dissection;
+    use dissect_core::Dissection;
     use dissect_core::LatticeKind;
 
     #[test]
@@ -130,12 +130,13 @@ mod tests {
             vec![[0, 1, 0], [1, 1, 0], [2, 1, 0]],
             vec![[0, 2, 0], [1, 2, 0], [2, 2, 0]],
         ];
-        let d = Dissection {
-            lattice: LatticeKind::Square,
-            mirror: true,
-            names: vec!["sq.txt".into(), "sq2.txt".into()],
-            pieces: vec![pieces.clone(), pieces],
-        };
+        let d = Dissection::new(
+            LatticeKind::Square,
+            true,
+            vec!["sq.txt".into(), "sq2.txt".into()],
+            vec![pieces.clone(), pieces],
+        )
+        .unwrap();
         let scene = Scene::new(&d).unwrap();
         let files = sheets(&scene);
         assert_eq!(files.len(), 2);

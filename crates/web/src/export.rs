@@ -10,7 +10,8 @@
 
 use std::io::Write;
 
-use dissect_core::io::{parse_solution, Dissection};
+use dissect_core::io::parse_solution;
+use dissect_core::Dissection;
 use dissect_render::ldraw::PartKind;
 use dissect_render::stl::PhysicalOptions;
 use dissect_render::{RenderError, Scene};
@@ -96,14 +97,14 @@ fn dissection(req: &ExportRequest, limits: &Limits) -> Result<Dissection, ApiErr
         }
     };
     let (_, d) = parse_solution(&text).map_err(|e| ApiError::BadSolution(e.to_string()))?;
-    if d.pieces.len() > limits.max_figures() {
+    if d.pieces().len() > limits.max_figures() {
         return Err(ApiError::TooLarge(format!(
             "{} figures; this server takes at most {}",
-            d.pieces.len(),
+            d.pieces().len(),
             limits.max_figures()
         )));
     }
-    for (f, pieces) in d.pieces.iter().enumerate() {
+    for (f, pieces) in d.pieces().iter().enumerate() {
         let n: usize = pieces.iter().map(|p| p.len()).sum();
         if n > limits.max_cells() {
             return Err(ApiError::TooLarge(format!(

@@ -170,11 +170,7 @@ pub fn check_equal_areas(inputs: &[FigureInput], figures: &[Figure]) -> Result<(
 
 /// A cell in the JSON form of solution files.
 pub fn cell_json(lattice: LatticeKind, c: &Cell) -> Value {
-    if lattice.cell_arity() == 2 {
-        json!([c[0], c[1]])
-    } else {
-        json!([c[0], c[1], c[2]])
-    }
+    json!(lattice.cell_coords(*c))
 }
 
 /// A figure as the API returns it: cells, text, count and shape facts.

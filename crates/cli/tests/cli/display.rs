@@ -34,10 +34,10 @@ fn draw_fixture(sb: &Sandbox, fixture: &str, lattice: &str, figures: &[&str]) ->
     assert_valid(sb, lattice, "solution.json", figures);
     let (_, d) = parse_solution(&text).expect("fixture parses");
     let mut out = String::new();
-    for (name, pieces) in d.names.iter().zip(&d.pieces) {
+    for (name, pieces) in d.names().iter().zip(d.pieces()) {
         out += &format!(
             "{name}:\n{}\n",
-            dissect_core::ascii::draw(d.lattice, pieces, false)
+            dissect_core::ascii::draw(d.lattice(), pieces, false)
         );
     }
     out

@@ -6,5 +6,5 @@ mod solution_json;
 
 pub use figure_text::{format_figure, parse_figure, ParseError, ParseErrorKind};
 pub use solution_json::{
-    parse_solution, Dissection, SolutionError, SolutionFigure, SolutionFile, SOLUTION_FORMAT,
+    parse_solution, SolutionError, SolutionFigure, SolutionFile, SOLUTION_FORMAT,
 };

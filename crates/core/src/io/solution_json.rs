@@ -2,6 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::dissection::{Dissection, DissectionError};
 use crate::lattice::{Cell, LatticeKind};
 
 /// The value of the `format` key.
@@ -33,20 +34,6 @@ pub struct SolutionFigure {
     pub name: String,
     /// `pieces[i]` is the list of cells of piece `i`.
     pub pieces: Vec<Vec<Vec<i64>>>,
-}
-
-/// A dissection in typed form: `pieces[f][i]` are the cells of piece `i` in
-/// figure `f`.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Dissection {
-    /// The lattice.
-    pub lattice: LatticeKind,
-    /// Whether flips are allowed.
-    pub mirror: bool,
-    /// The figures' names.
-    pub names: Vec<String>,
-    /// `pieces[f][i]`: cells of piece `i` in figure `f`.
-    pub pieces: Vec<Vec<Vec<Cell>>>,
 }
 
 /// Occurs when a solution text cannot be read.
@@ -93,6 +80,9 @@ pub enum SolutionError {
         /// The lattice.
         lattice: LatticeKind,
     },
+    /// Occurs when the parts do not make a dissection.
+    #[error("{0}")]
+    Dissection(#[from] DissectionError),
 }
 
 /// Parses a solution text into its typed form.
@@ -116,8 +106,7 @@ pub fn parse_solution(text: &str) -> Result<(SolutionFile, Dissection), Solution
         .lattice
         .parse()
         .map_err(|_| SolutionError::UnknownLattice(file.lattice.clone()))?;
-    let l = lattice.lattice();
-    let mirror = file.mirror.unwrap_or(l.supports_mirror()) && l.supports_mirror();
+    let mirror = file.mirror.unwrap_or(lattice.lattice().supports_mirror());
     let mut pieces = Vec::with_capacity(file.figures.len());
     for (fi, fig) in file.figures.iter().enumerate() {
         let mut fp = Vec::with_capacity(fig.pieces.len());
@@ -142,31 +131,25 @@ pub fn parse_solution(text: &str) -> Result<(SolutionFile, Dissection), Solution
         pieces.push(fp);
     }
     let names = file.figures.iter().map(|f| f.name.clone()).collect();
-    Ok((
-        file,
-        Dissection {
-            lattice,
-            mirror,
-            names,
-            pieces,
-        },
-    ))
+    let d = Dissection::new(lattice, mirror, names, pieces)?;
+    Ok((file, d))
 }
 
 impl Dissection {
     /// The file form, with `extra` keys added after the contract's keys.
     pub fn to_file(&self, extra: serde_json::Map<String, serde_json::Value>) -> SolutionFile {
-        let cell_json = |c: &Cell| -> Vec<i64> { self.lattice.cell_coords(*c) };
+        let lattice = self.lattice();
+        let cell_json = |c: &Cell| -> Vec<i64> { lattice.cell_coords(*c) };
         SolutionFile {
             format: Some(SOLUTION_FORMAT.to_string()),
-            lattice: self.lattice.name().to_string(),
-            mirror: Some(self.mirror),
+            lattice: lattice.name().to_string(),
+            mirror: Some(self.mirror()),
             figures: self
-                .pieces
+                .pieces()
                 .iter()
                 .enumerate()
                 .map(|(f, pieces)| SolutionFigure {
-                    name: self.names.get(f).cloned().unwrap_or_default(),
+                    name: self.names().get(f).cloned().unwrap_or_default(),
                     pieces: pieces
                         .iter()
                         .map(|p| p.iter().map(cell_json).collect())
@@ -175,11 +158,6 @@ impl Dissection {
                 .collect(),
             extra,
         }
-    }
-
-    /// The number of pieces (of the first figure).
-    pub fn piece_count(&self) -> usize {
-        self.pieces.first().map_or(0, |p| p.len())
     }
 }
 

@@ -61,22 +61,22 @@ fn golden_square_solution() {
 fn defaults_and_unknown_keys() {
     let text = r#"{"format": "dissection-solution/1", "lattice": "tri4", "figures": [{"pieces": [[[0,0,1]]]}], "score": 3}"#;
     let (file, d) = parse_solution(text).unwrap();
-    assert!(d.mirror, "mirror defaults to true in 2D");
-    assert_eq!(d.names, vec![String::new()]);
-    assert_eq!(d.pieces, vec![vec![vec![[0, 0, 1]]]]);
+    assert!(d.mirror(), "mirror defaults to true in 2D");
+    assert_eq!(d.names(), vec![String::new()]);
+    assert_eq!(d.pieces(), vec![vec![vec![[0, 0, 1]]]]);
     assert_eq!(file.extra["score"], 3);
     let (_, d) =
         parse_solution(r#"{"format": "dissection-solution/1", "lattice": "cubic", "figures": []}"#)
             .unwrap();
-    assert!(!d.mirror, "never mirror in 3D");
+    assert!(!d.mirror(), "never mirror in 3D");
     let (_, d) = parse_solution(
         r#"{"format": "dissection-solution/1", "lattice": "cubic", "mirror": true, "figures": []}"#,
     )
     .unwrap();
-    assert!(!d.mirror, "never mirror in 3D, even when asked");
+    assert!(!d.mirror(), "never mirror in 3D, even when asked");
     let (_, d) =
         parse_solution(r#"{"format": "dissection-solution/1", "lattice": "square", "mirror": false, "figures": []}"#).unwrap();
-    assert!(!d.mirror);
+    assert!(!d.mirror());
 }
 
 #[test]

@@ -7,9 +7,9 @@ use std::process::Command;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
-use dissect_core::io::Dissection;
 use dissect_core::solver::{solve, Event, Found, Observer, Options, Outcome, SolveError};
 use dissect_core::verify::verify;
+use dissect_core::Dissection;
 use dissect_core::{Figure, LatticeKind};
 
 use super::util::{fig, Cubic, Square, Tri4};
@@ -44,12 +44,7 @@ fn dissection_of(
     found: &Found,
     names: Vec<String>,
 ) -> Dissection {
-    Dissection {
-        lattice,
-        mirror,
-        names,
-        pieces: found.pieces.clone(),
-    }
+    Dissection::new(lattice, mirror, names, found.pieces.clone()).expect("cells of the lattice")
 }
 
 /// Solves the figures and checks the answer: verified, at most `max_pieces`

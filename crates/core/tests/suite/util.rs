@@ -9,7 +9,8 @@
 //! the triangles top, right, bottom, left (`.` for an empty triangle, a lone
 //! `.` for an empty square).
 
-use dissect_core::io::{parse_figure, Dissection};
+use dissect_core::io::parse_figure;
+use dissect_core::Dissection;
 use dissect_core::{Cell, Figure, LatticeKind};
 
 pub use LatticeKind::{Cubic, Hex, Square, Tri3, Tri4};
@@ -100,12 +101,13 @@ pub fn dissection(
         .iter()
         .map(|s| labelled_figure(lattice, s))
         .collect();
-    let d = Dissection {
+    let d = Dissection::new(
         lattice,
         mirror,
-        names: (0..labelled.len()).map(|i| format!("f{i}.txt")).collect(),
-        pieces: labelled.iter().map(|s| pieces(lattice, s)).collect(),
-    };
+        (0..labelled.len()).map(|i| format!("f{i}.txt")).collect(),
+        labelled.iter().map(|s| pieces(lattice, s)).collect(),
+    )
+    .expect("cells of the lattice");
     (figures, d)
 }
 

@@ -1,9 +1,8 @@
 //! The independent verifier: it accepts valid dissections on every lattice
 //! and names every kind of violation.
 
-use dissect_core::io::Dissection;
 use dissect_core::verify::{verify, verify_pieces, Violation};
-use dissect_core::{Figure, LatticeKind};
+use dissect_core::{Cell, Dissection, Figure, LatticeKind};
 
 use super::util::{dissection, Cubic, Square, Tri4};
 
@@ -18,11 +17,20 @@ fn check_invalid(
     lattice: LatticeKind,
     mirror: bool,
     labelled: &[&str],
-    edit: impl FnOnce(&mut Dissection, &mut Vec<Figure>),
+    edit: impl FnOnce(&mut Parts, &mut Vec<Figure>),
     violations: &[Violation],
 ) {
-    let (mut figures, mut d) = dissection(lattice, mirror, labelled);
-    edit(&mut d, &mut figures);
+    let (mut figures, d) = dissection(lattice, mirror, labelled);
+    let (lattice, mirror, names, pieces) = d.into_parts();
+    let mut parts = Parts {
+        lattice,
+        mirror,
+        names,
+        pieces,
+    };
+    edit(&mut parts, &mut figures);
+    let d = Dissection::new(parts.lattice, parts.mirror, parts.names, parts.pieces)
+        .expect("edits keep cells of the lattice");
     assert_eq!(
         verify(&d, &figures),
         Err(violations.to_vec()),
@@ -30,7 +38,15 @@ fn check_invalid(
     );
 }
 
-fn no_edit(_: &mut Dissection, _: &mut Vec<Figure>) {}
+fn no_edit(_: &mut Parts, _: &mut Vec<Figure>) {}
+
+/// A dissection taken apart, to be edited into an invalid one.
+struct Parts {
+    lattice: LatticeKind,
+    mirror: bool,
+    names: Vec<String>,
+    pieces: Vec<Vec<Vec<Cell>>>,
+}
 
 /// Two vertical dominoes and two horizontal ones.
 const DOMINOES: [&str; 2] = ["AB|AB", "AABB"];
@@ -366,10 +382,10 @@ fn rejects_mismatched_shapes_of_the_solution() {
 fn verify_pieces_is_verify() {
     let (figures, d) = dissection(Tri4, false, &["AAAA A..A", "AA.. AAAA"]);
     assert_eq!(
-        verify_pieces(Tri4, false, &figures, &d.pieces),
+        verify_pieces(Tri4, false, &figures, d.pieces()),
         verify(&d, &figures)
     );
-    assert!(verify_pieces(Tri4, true, &figures, &d.pieces).is_ok());
+    assert!(verify_pieces(Tri4, true, &figures, d.pieces()).is_ok());
 }
 
 #[test]
@@ -398,12 +414,7 @@ fn violation_messages() {
 
 #[test]
 fn a_dissection_of_no_figure_is_refused_not_a_panic() {
-    let d = dissect_core::io::Dissection {
-        lattice: dissect_core::LatticeKind::Square,
-        mirror: true,
-        names: vec![],
-        pieces: vec![],
-    };
+    let d = Dissection::unnamed(dissect_core::LatticeKind::Square, true, vec![]).unwrap();
     assert_eq!(
         dissect_core::verify::verify(&d, &[]),
         Err(vec![Violation::NoPieces])
