@@ -416,3 +416,36 @@ fn api_name(message: &str) -> String {
         None => m.to_string(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use axum::body::Body;
+    use axum::http::{Request, StatusCode};
+    use tower::ServiceExt;
+
+    use super::*;
+
+    /// Past the limit on pictures made at once, a rasterization gets 429
+    /// at once, and works again when a slot frees.
+    #[tokio::test]
+    async fn pictures_past_the_limit_get_429() {
+        let limits = Limits::default().with_max_concurrent_pictures(1);
+        let state = AppState::new(limits, Access::open());
+        let app = router_with_state(state.clone());
+        let request = || {
+            Request::post("/api/rasterize?lattice=square&cells=4")
+                .header("host", "127.0.0.1:7878")
+                .header("content-type", "image/svg+xml")
+                .body(Body::from(
+                    r#"<svg xmlns="http://www.w3.org/2000/svg" width="20" height="20"><rect width="20" height="20"/></svg>"#,
+                ))
+                .unwrap()
+        };
+        let held = state.picture_permit().expect("a free slot");
+        let r = app.clone().oneshot(request()).await.unwrap();
+        assert_eq!(r.status(), StatusCode::TOO_MANY_REQUESTS);
+        drop(held);
+        let r = app.oneshot(request()).await.unwrap();
+        assert_eq!(r.status(), StatusCode::OK);
+    }
+}

@@ -470,3 +470,117 @@ fn solver_options_out_of_range_are_refused() {
     assert!(matches!(run.code, Some(0) | Some(1)), "{}", run.stderr);
     assert!(run.elapsed < Duration::from_secs(10), "{:?}", run.elapsed);
 }
+
+/// Starts `dissect` under the 2 GiB cap with piped output (the shell
+/// `exec`s it, so the child's pid is dissect's).
+fn spawn_capped(sb: &Sandbox, args: &[&str]) -> std::process::Child {
+    std::process::Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 2097152 && exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_dissect"))
+        .args(args)
+        .current_dir(sb.path("."))
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("start dissect")
+}
+
+fn rect(w: usize, h: usize) -> String {
+    format!("{}\n", "#".repeat(w)).repeat(h)
+}
+
+/// `bound` on 100×90 → 90×100 (bounds alone would take minutes): the time
+/// limit and the first Ctrl-C each end it within a second or so, with the
+/// best bound proved so far, under the 2 GiB cap.
+#[test]
+fn bound_on_big_figures_honours_the_time_limit_and_the_first_ctrl_c() {
+    let sb = Sandbox::new();
+    let a = sb.write("a.txt", &rect(100, 90));
+    let b = sb.write("b.txt", &rect(90, 100));
+    let run = sb.run_capped(&["bound", "--time-limit", "2", "-q", &a, &b], LIMIT);
+    run.expect_code(0).stdout_has(&["stopped", "lower bound: "]);
+    assert!(run.elapsed < Duration::from_secs(5), "{:?}", run.elapsed);
+
+    let mut child = spawn_capped(&sb, &["bound", "-q", &a, &b]);
+    std::thread::sleep(Duration::from_millis(1000));
+    let interrupted = std::time::Instant::now();
+    let ok = std::process::Command::new("sh")
+        .args(["-c", &format!("kill -INT {}", child.id())])
+        .status()
+        .expect("run sh");
+    assert!(ok.success());
+    let status = loop {
+        if let Some(s) = child.try_wait().expect("wait") {
+            break s;
+        }
+        assert!(
+            interrupted.elapsed() < Duration::from_secs(5),
+            "the first Ctrl-C did not stop bound"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut out = String::new();
+    std::io::Read::read_to_string(&mut child.stdout.take().expect("piped"), &mut out)
+        .expect("UTF-8");
+    assert_eq!(status.code(), Some(0), "{out}");
+    assert!(
+        out.contains("stopped") && out.contains("lower bound: "),
+        "{out}"
+    );
+}
+
+/// `bound --max-pieces 1000000 --dimacs` would need terabytes: refused from
+/// an estimate before anything is built, under the 2 GiB cap.
+#[test]
+fn a_dimacs_file_too_large_for_memory_is_refused_at_once() {
+    let sb = Sandbox::new();
+    let a = sb.write("a.txt", &rect(85, 3));
+    let b = sb.write("b.txt", &rect(15, 17));
+    let run = refused(
+        &sb,
+        &[
+            "bound",
+            "--max-pieces",
+            "1000000",
+            "--dimacs",
+            "k.cnf",
+            &a,
+            &b,
+        ],
+        &[
+            "SAT encoding for 1000000 pieces would need about",
+            "512 MiB",
+        ],
+    );
+    assert!(run.elapsed < Duration::from_secs(5), "{:?}", run.elapsed);
+    assert!(!sb.path("k.cnf").exists());
+}
+
+/// `solve --prove --time-limit 2` on two 255-cell figures (it once ran
+/// past 40 s at 1 GB): it ends at its limit with a verified answer, under
+/// the 2 GiB cap.
+#[test]
+fn solve_with_proof_on_255_cells_ends_at_its_time_limit() {
+    let sb = Sandbox::new();
+    let a = sb.write("a.txt", &rect(85, 3));
+    let b = sb.write("b.txt", &rect(15, 17));
+    let run = sb.run_capped(
+        &[
+            "solve",
+            "--prove",
+            "--time-limit",
+            "2",
+            "-q",
+            "-o",
+            "out.json",
+            &a,
+            &b,
+        ],
+        LIMIT,
+    );
+    run.expect_code(0);
+    assert!(run.elapsed < Duration::from_secs(6), "{:?}", run.elapsed);
+    assert!(crate::support::assert_valid(&sb, "square", "out.json", &[&a, &b]) >= 2);
+}
