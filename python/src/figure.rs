@@ -41,30 +41,23 @@ pub(crate) fn cells_to_py<'py>(
     PyList::new(py, tuples)
 }
 
-/// A cell from 2 or 3 coordinates (a missing third one is 0).
+/// A cell as solution files write it (a 2D cell may also be `[x, y, 0]`):
+/// the core's one rule, [`LatticeKind::cell_from_coords_padded`].
 pub(crate) fn cell_from_coords(
     py: Python<'_>,
     lattice: LatticeKind,
     coords: &[i64],
 ) -> PyResult<Cell> {
-    let bad = || {
+    lattice.cell_from_coords_padded(coords).ok_or_else(|| {
         error(
             py,
             Kind::Figure,
-            format!("{coords:?} is not a cell of the {lattice} lattice"),
+            format!(
+                "{coords:?} is not a cell of the {lattice} lattice (a {lattice} cell is {})",
+                lattice.cell_form()
+            ),
         )
-    };
-    if !(2..=3).contains(&coords.len()) {
-        return Err(bad());
-    }
-    let mut cell = [0i32; 3];
-    for (c, v) in cell.iter_mut().zip(coords) {
-        *c = i32::try_from(*v)
-            .ok()
-            .filter(|v| v.unsigned_abs() <= 1 << 24)
-            .ok_or_else(bad)?;
-    }
-    Ok(cell)
+    })
 }
 
 #[pymethods]

@@ -44,11 +44,7 @@ pub fn name_of(input: &FigureInput, index: usize) -> String {
 /// ([`LatticeKind::cell_from_coords`]) and the limits. A 2D cell may also be
 /// given with a third coordinate of 0.
 fn cell(raw: &[i64], lattice: LatticeKind, limits: &Limits) -> Result<Cell, String> {
-    let coords = match raw {
-        [x, y, 0] if lattice.cell_arity() == 2 => &[*x, *y][..],
-        _ => raw,
-    };
-    let c = lattice.cell_from_coords(coords).ok_or_else(|| {
+    let c = lattice.cell_from_coords_padded(raw).ok_or_else(|| {
         format!(
             "{raw:?} is not a cell of the {lattice} lattice (a {lattice} cell is {})",
             lattice.cell_form()

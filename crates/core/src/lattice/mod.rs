@@ -260,6 +260,17 @@ impl LatticeKind {
         self.lattice().is_cell(cell).then_some(cell)
     }
 
+    /// [`LatticeKind::cell_from_coords`], also taking a 2D lattice's cell
+    /// written with a third coordinate of 0 (`[x, y, 0]`, as arrays of
+    /// three columns give it): the rule of the studio's API and of Python's
+    /// `Figure.from_cells`.
+    pub fn cell_from_coords_padded(self, coords: &[i64]) -> Option<Cell> {
+        match coords {
+            [x, y, 0] if self.cell_arity() == 2 => self.cell_from_coords(&[*x, *y]),
+            _ => self.cell_from_coords(coords),
+        }
+    }
+
     /// The coordinates a cell is written with in files (the inverse of
     /// [`LatticeKind::cell_from_coords`]).
     pub fn cell_coords(self, cell: Cell) -> Vec<i64> {
