@@ -34,5 +34,5 @@ pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions,
 pub use options::{OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS};
 pub use repair::ExactRepair;
 pub use report::{End, Improvement, LowerBound, Ranking, Report, Solution, Source};
-pub use run::{run, run_with, EngineError, EngineEvent, EngineObserver};
+pub use run::{run, run_with, EngineError, EngineEvent, EngineObserver, SLIVER_CELLS};
 pub use verified::Verified;

@@ -510,7 +510,63 @@ pub fn run_with(
         _ => None,
     };
     drain();
-    let heuristic: Option<Outcome> = heuristic.transpose()?;
+    let mut heuristic: Option<Outcome> = heuristic.transpose()?;
+    // Polish: an answer with a sliver (a piece of fewer than SLIVER_CELLS
+    // cells) gets one more round of the search at its piece count that
+    // accepts only sliver-free dissections, in the time left.
+    let sat_count = shared.sat_best.load(Ordering::SeqCst);
+    let sliver_count = heuristic
+        .as_ref()
+        .and_then(|o| o.found.as_ref())
+        .filter(|f| f.piece_count() <= sat_count && has_sliver(&f.pieces))
+        .map(|f| f.piece_count());
+    if let Some(count) = sliver_count.filter(|_| {
+        strategy == Strategy::Anytime
+            && shared.judge.is_none()
+            && figures[0].len() <= PROVE_MAX_CELLS
+            && matches!(end, End::Optimal | End::Finished)
+            && !stop.load(Ordering::SeqCst)
+            && deadline.is_none_or(|d| Instant::now() < d)
+    }) {
+        let polish_options = dissect_core::solver::Options {
+            max_pieces: Some(count),
+            ..solver_options.clone()
+        };
+        let polish_anytime = dissect_core::solver::Anytime {
+            idle_rounds: Some(1),
+            max_rounds: Some(1),
+            ..anytime.clone()
+        };
+        let polish_stop = AtomicBool::new(false);
+        let polish_done = AtomicBool::new(false);
+        let polished = std::thread::scope(|s| {
+            let t = s.spawn(|| {
+                let r = solve_anytime_with(
+                    figures,
+                    &polish_options,
+                    &polish_anytime,
+                    &polish_stop,
+                    &NoSlivers(&shared),
+                    repairer,
+                    executor,
+                );
+                polish_done.store(true, Ordering::SeqCst);
+                r
+            });
+            while !polish_done.load(Ordering::SeqCst) {
+                if stop.load(Ordering::SeqCst) || deadline.is_some_and(|d| Instant::now() >= d) {
+                    polish_stop.store(true, Ordering::SeqCst);
+                }
+                std::thread::sleep(Duration::from_millis(5));
+            }
+            t.join().expect("polish thread")
+        })?;
+        if let (Some(h), Some(found)) = (heuristic.as_mut(), polished.found) {
+            if found.piece_count() <= count && !has_sliver(&found.pieces) {
+                h.found = Some(found);
+            }
+        }
+    }
 
     let mut best: Option<(Verified, Source, Option<usize>)> = None;
     if let Some(found) = heuristic.as_ref().and_then(|o| o.found.as_ref()) {
@@ -638,6 +694,42 @@ pub fn run_with(
         solutions,
         ranking,
     })
+}
+
+/// Pieces of fewer cells are slivers: a run whose answer has one polishes
+/// it (one more round at the same piece count, sliver-free answers only).
+pub const SLIVER_CELLS: usize = 3;
+
+/// Whether a dissection (`pieces[f][i]`) has a piece of fewer than
+/// [`SLIVER_CELLS`] cells.
+fn has_sliver(pieces: &[Vec<Vec<Cell>>]) -> bool {
+    pieces
+        .first()
+        .is_some_and(|p| p.iter().any(|c| c.len() < SLIVER_CELLS))
+}
+
+/// The polish's observer: the run's, refusing every dissection with a
+/// sliver and steering candidates away from tiny pieces.
+struct NoSlivers<'s, 'a>(&'s Shared<'a>);
+
+impl Observer for NoSlivers<'_, '_> {
+    fn on_event(&self, event: &Event) {
+        Observer::on_event(self.0, event);
+    }
+
+    fn judges(&self) -> bool {
+        true
+    }
+
+    fn judge(&self, pieces: &[Vec<Vec<Cell>>], valid: bool) -> Judgement {
+        let missing: usize = pieces.first().map_or(0, |p| {
+            p.iter().map(|c| SLIVER_CELLS.saturating_sub(c.len())).sum()
+        });
+        Judgement {
+            accept: !valid || missing == 0,
+            penalty: 2.0 * missing as f64,
+        }
+    }
 }
 
 /// Why a dissection meeting `b` is optimal, in words.

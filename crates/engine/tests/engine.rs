@@ -162,6 +162,31 @@ fn a_run_reports_a_verified_answer_its_history_and_the_optimal_mark() {
     assert_eq!(json["history"].as_array().unwrap().len(), counts.len());
 }
 
+/// The 3×3 and 4×4 squares into a 5×5 square: the constructive dissection
+/// is already optimal (4 pieces) but has pieces of 2 cells; the polish
+/// finds 4 pieces without a sliver, and the answer is still optimal.
+#[test]
+fn an_optimal_answer_with_slivers_is_polished_at_the_same_count() {
+    let figures = [
+        square(&["####..###", "####..###", "####..###", "####....."]),
+        square(&["#####", "#####", "#####", "#####", "#####"]),
+    ];
+    let names = vec!["a".to_string(), "b".to_string()];
+    let options = RunOptions::new(RunConfig::default()).unwrap();
+    let report = run(&figures, &names, &options, &AtomicBool::new(false), &()).unwrap();
+    let best = report.best.as_ref().expect("a dissection");
+    assert_eq!(
+        verify_pieces(LatticeKind::Square, true, &figures, best.pieces()),
+        Ok(4)
+    );
+    assert!(report.optimal);
+    let sizes: Vec<usize> = best.pieces()[0].iter().map(Vec::len).collect();
+    assert!(
+        sizes.iter().all(|&n| n >= dissect_engine::SLIVER_CELLS),
+        "no sliver: {sizes:?}"
+    );
+}
+
 #[test]
 fn without_a_time_limit_the_answer_is_the_same_for_1_and_2_threads() {
     let figures = [
