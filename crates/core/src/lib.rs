@@ -7,14 +7,11 @@
 
 pub mod ascii;
 pub mod dissection;
-pub(crate) mod distance;
 pub mod figure;
 pub mod io;
 pub mod lattice;
-pub(crate) mod matching;
 pub mod motion;
 pub mod palette;
-pub(crate) mod piece;
 pub mod solver;
 pub mod transform;
 pub mod verify;

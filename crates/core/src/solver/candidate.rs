@@ -1,10 +1,10 @@
 //! Candidates (one labelling of every figure) and their objective.
 
-use crate::distance::{Geometry, Side};
 use crate::figure::Figure;
 use crate::lattice::Cell;
-use crate::matching::{match_pieces, PairMatching};
-use crate::piece::Pieces;
+use crate::solver::distance::{Geometry, Side};
+use crate::solver::matching::{match_pieces, PairMatching};
+use crate::solver::piece::Pieces;
 use crate::solver::shape::{LabelGrid, Layout, Shape};
 
 /// The figures of one solve, in solver form.

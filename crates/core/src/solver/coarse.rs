@@ -22,10 +22,10 @@ use rand_chacha::ChaCha8Rng;
 
 use crate::figure::Figure;
 use crate::lattice::Cell;
-use crate::piece::UNSET;
 use crate::solver::candidate::{Candidate, Problem, Score};
 use crate::solver::flood_fill::{flood_fill, Fallback};
 use crate::solver::levels::lambda;
+use crate::solver::piece::UNSET;
 use crate::solver::refine::refine_with_patience;
 use crate::solver::{Found, Options};
 

@@ -5,7 +5,7 @@
 
 use rand::RngExt;
 
-use crate::piece::UNSET;
+use crate::solver::piece::UNSET;
 use crate::solver::shape::Shape;
 
 /// Where a cell that no labelled cell can reach gets its label.

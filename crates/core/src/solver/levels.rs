@@ -8,9 +8,9 @@ use std::sync::atomic::AtomicBool;
 
 use rand::RngExt;
 
-use crate::piece::UNSET;
 use crate::solver::candidate::{Aligned, Candidate, Problem, Score};
 use crate::solver::flood_fill::{flood_fill, Fallback};
+use crate::solver::piece::UNSET;
 use crate::solver::refine::{mismatched_cells, refine_with_patience};
 use crate::solver::Options;
 

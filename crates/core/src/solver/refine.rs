@@ -12,9 +12,9 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rand::seq::SliceRandom;
 use rand::RngExt;
 
-use crate::piece::UNSET;
 use crate::solver::candidate::{Aligned, Candidate, Problem};
 use crate::solver::flood_fill::{flood_fill, Fallback};
+use crate::solver::piece::UNSET;
 use crate::transform::Transform;
 
 /// The transforms that carry each figure's piece `a` onto the pivot's piece

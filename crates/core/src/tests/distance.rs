@@ -7,9 +7,9 @@ use std::collections::BTreeSet;
 
 use rand::RngExt;
 
-use crate::distance::Geometry;
 use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind, Point};
+use crate::solver::distance::Geometry;
 
 use super::util::{
     candidate, candidate_of, matching, piece_points, rng, Cubic, Hex, Square, Tri3, Tri4,

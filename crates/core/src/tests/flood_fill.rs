@@ -2,8 +2,8 @@
 //! connected figure every cluster grown from one seed stays connected.
 
 use crate::lattice::LatticeKind;
-use crate::piece::{Pieces, UNSET};
 use crate::solver::flood_fill::{flood_fill, Fallback};
+use crate::solver::piece::{Pieces, UNSET};
 
 use super::util::{candidate, draw_square, rng, Cubic, Square, Tri4};
 

@@ -1,7 +1,7 @@
 //! The solver's form of a figure (`Shape`) and of its pieces (`Pieces`).
 
 use crate::lattice::LatticeKind;
-use crate::piece::Pieces;
+use crate::solver::piece::Pieces;
 use crate::solver::shape::Shape;
 
 use super::util::{labelled, Cubic, Square, Tri4};

@@ -12,12 +12,12 @@ use std::collections::BTreeSet;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-use crate::distance::Geometry;
 use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind, Point};
-use crate::matching::PairMatching;
-use crate::piece::{Pieces, UNSET};
 use crate::solver::candidate::{Candidate, Problem};
+use crate::solver::distance::Geometry;
+use crate::solver::matching::PairMatching;
+use crate::solver::piece::{Pieces, UNSET};
 use crate::solver::shape::Shape;
 
 pub(crate) use LatticeKind::{Cubic, Hex, Square, Tri3, Tri4};

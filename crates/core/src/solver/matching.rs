@@ -4,7 +4,7 @@
 use pathfinding::kuhn_munkres::kuhn_munkres_min;
 use pathfinding::matrix::Matrix;
 
-use crate::distance::{distance, Geometry, Side};
+use crate::solver::distance::{distance, Geometry, Side};
 use crate::transform::Transform;
 
 /// A matching from the pieces of figure A to those of figure B.

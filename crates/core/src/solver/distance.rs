@@ -5,7 +5,7 @@
 //! that miss `b` plus those of `b` that miss `a`.
 
 use crate::lattice::Symmetry;
-use crate::piece::Pieces;
+use crate::solver::piece::Pieces;
 use crate::solver::shape::Layout;
 use crate::transform::Transform;
 
