@@ -1257,11 +1257,14 @@ pub fn solve_anytime_with(
                     done = improve(&mut best, &mut outcome, c, s, level, 0, Via::Coarse);
                 }
             }
-            // Not yet a dissection: climb the paper's levels from it (one
-            // more piece per level, at most CLIMB levels) while that stays
-            // below the best.
+            // Not yet a dissection but close (a repairable distance): climb
+            // the paper's levels from it (one more piece per level, at most
+            // CLIMB levels) while that stays below the best. A lift far
+            // from any dissection (curved boundaries the coarse cells cut
+            // differently) is left to the descent.
+            let close = score.mismatch <= 4 * options.near_miss(figures.len(), cells);
             let mut parents = vec![(cand, score)];
-            let top = level + CLIMB;
+            let top = if close { level + CLIMB } else { level };
             let mut level = level + 1;
             while !done && !search.stopped() && level <= top {
                 let pieces = level + 1;
