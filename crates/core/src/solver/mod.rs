@@ -20,6 +20,7 @@ pub(crate) mod piece;
 pub(crate) mod refine;
 pub(crate) mod shape;
 
+use std::collections::VecDeque;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
 
@@ -341,6 +342,11 @@ enum From<'p> {
 /// Stream levels of the descent are kept apart from the ladder's.
 pub(crate) const DESCENT: usize = 1 << 20;
 
+/// Explorations run ahead per worker thread (in whole batches, see
+/// [`Search::level`]); at most `MAX_AHEAD` batches.
+const AHEAD_PER_THREAD: usize = 4;
+const MAX_AHEAD: usize = 8;
+
 /// Levels climbed at full resolution from a lifted coarse candidate.
 const CLIMB: usize = 2;
 
@@ -560,12 +566,30 @@ impl<'a> Search<'a> {
         let mut start = first;
         let mut planned = first + n;
         let mut stopped = false;
+        // Explorations run ahead of the batch being decided, up to `ahead`
+        // batches at once (the pool's path; an executor gets one batch at a
+        // time), so that many threads meet at a barrier once per window
+        // rather than once per batch. Results are still taken batch by
+        // batch in index order and those past the batch that decides the
+        // level are dropped: the answer does not depend on the threads.
+        let ahead = (AHEAD_PER_THREAD * self.pool.current_num_threads())
+            .div_ceil(batch)
+            .clamp(1, MAX_AHEAD);
+        let mut pending: VecDeque<(Candidate, Score)> = VecDeque::new();
         while start < planned {
             let end = (start + batch).min(planned);
             let chunk: Vec<(Candidate, Score)> = match self.executor {
-                None => self
-                    .pool
-                    .install(|| (start..end).into_par_iter().map(run_one).collect()),
+                None => {
+                    if pending.len() < end - start {
+                        let from = start + pending.len();
+                        let to = (start + batch * ahead).min(planned);
+                        let more: Vec<(Candidate, Score)> = self
+                            .pool
+                            .install(|| (from..to).into_par_iter().map(run_one).collect());
+                        pending.extend(more);
+                    }
+                    pending.drain(..end - start).collect()
+                }
                 Some(ex) => {
                     let batch = Batch {
                         round,

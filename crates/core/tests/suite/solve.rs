@@ -185,9 +185,17 @@ fn same_seed_same_result_whatever_the_threads() {
         let figures: Vec<Figure> = compact.iter().map(|s| fig(lattice, s)).collect();
         let one = run(&figures, &small(11, 1));
         let two = run(&figures, &small(11, 2));
+        // Eight threads run four batches ahead of the one being decided.
+        let eight = run(&figures, &small(11, 8));
         assert_eq!(one.found, two.found, "{compact:?} on {lattice}");
+        assert_eq!(
+            one.found, eight.found,
+            "{compact:?} on {lattice}, 8 threads"
+        );
         assert_eq!(one.best_mismatch, two.best_mismatch);
+        assert_eq!(one.best_mismatch, eight.best_mismatch);
         assert_eq!(one.explorations, two.explorations);
+        assert_eq!(one.explorations, eight.explorations);
         assert!(one.found.is_some());
     }
 }
