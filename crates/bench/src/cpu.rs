@@ -35,3 +35,25 @@ pub fn load_average() -> Option<[f64; 3]> {
     let mut it = text.split_whitespace().map(|f| f.parse::<f64>().ok());
     Some([it.next()??, it.next()??, it.next()??])
 }
+
+/// Resets the process's peak resident set size (`VmHWM`) to its current
+/// size, through `/proc/self/clear_refs` (Linux 4.0 and later); false where
+/// that is not possible, and the peak then covers the process's whole life.
+pub fn reset_peak_rss() -> bool {
+    std::fs::write("/proc/self/clear_refs", "5").is_ok()
+}
+
+/// The process's peak resident set size in bytes since it started or since
+/// [`reset_peak_rss`] (`VmHWM` of `/proc/self/status`), or `None` where
+/// `/proc` is not available.
+pub fn peak_rss() -> Option<u64> {
+    parse_status_hwm(&std::fs::read_to_string("/proc/self/status").ok()?)
+}
+
+/// `VmHWM` of a `/proc/<pid>/status` text, in bytes.
+pub fn parse_status_hwm(status: &str) -> Option<u64> {
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let mut it = line["VmHWM:".len()..].split_whitespace();
+    let kib: u64 = it.next()?.parse().ok()?;
+    (it.next() == Some("kB")).then_some(kib * 1024)
+}

@@ -324,7 +324,7 @@ fn progress(what: &str, r: &SeedRun) -> String {
     }
     match r.pieces {
         Some(p) => format!(
-            "{head} {p} pieces{}, first valid {} s, best {} s, total {} s (CPU {} s), area variance {:.1}",
+            "{head} {p} pieces{}, first valid {} s, best {} s, total {} s (CPU {} s, peak RSS {} MiB), area variance {:.1}",
             match r.lower_bound {
                 Some(b) if r.optimal => format!(" (optimal: lower bound {b})"),
                 Some(b) => format!(" (lower bound {b})"),
@@ -334,6 +334,7 @@ fn progress(what: &str, r: &SeedRun) -> String {
             r.time_to_best.map_or("-".to_string(), report::secs),
             report::secs(r.total),
             r.cpu.map_or("-".to_string(), report::secs),
+            report::max_rss(std::slice::from_ref(r)),
             r.variance.unwrap_or(f64::NAN),
         ),
         None => format!(

@@ -176,6 +176,7 @@ pub fn suite_table(results: &[InstanceResult], style: Style) -> String {
         "first valid s med / worst",
         "total s med / worst",
         "CPU s (med)",
+        "peak RSS MiB (max)",
         "area var (med)",
         "reached ref",
         "target",
@@ -210,6 +211,7 @@ pub fn suite_table(results: &[InstanceResult], style: Style) -> String {
                 pair(r.first_valid(), secs),
                 pair(r.total(), secs),
                 median_cpu(&r.runs),
+                max_rss(&r.runs),
                 median_f64(r.runs.iter().filter_map(|s| s.variance))
                     .map_or("-".to_string(), |v| format!("{v:.1}")),
                 reached,
@@ -231,6 +233,7 @@ pub fn seed_table(results: &[InstanceResult], style: Style) -> String {
         "lower bound",
         "total s",
         "CPU s",
+        "peak RSS MiB",
         "area var",
         "explorations",
         "note",
@@ -251,6 +254,7 @@ pub fn seed_table(results: &[InstanceResult], style: Style) -> String {
                 },
                 secs(s.total),
                 s.cpu.map_or("-".to_string(), secs),
+                max_rss(std::slice::from_ref(s)),
                 s.variance.map_or("-".to_string(), |v| format!("{v:.1}")),
                 s.explorations.to_string(),
                 note(s),
@@ -258,6 +262,16 @@ pub fn seed_table(results: &[InstanceResult], style: Style) -> String {
         }
     }
     table(&headers, &rows, style)
+}
+
+/// The largest peak resident set size of some runs in MiB (`-` when
+/// unknown for any of them).
+pub fn max_rss(runs: &[SeedRun]) -> String {
+    let peaks: Option<Vec<u64>> = runs.iter().map(|r| r.peak_rss).collect();
+    match peaks.and_then(|p| p.into_iter().max()) {
+        Some(bytes) => format!("{:.0}", bytes as f64 / (1024.0 * 1024.0)),
+        None => "-".to_string(),
+    }
 }
 
 /// The median CPU time of the runs that report one.
@@ -302,6 +316,7 @@ pub fn scale_table(steps: &[ScaleStep], style: Style) -> String {
         "first valid s med / worst",
         "total s med / worst",
         "CPU s (med)",
+        "peak RSS MiB (max)",
         "growth exponent vs previous k (wall / CPU)",
     ];
     let median_first = |s: &ScaleStep| {
@@ -354,6 +369,7 @@ pub fn scale_table(steps: &[ScaleStep], style: Style) -> String {
                     secs,
                 ),
                 median_cpu(&s.runs),
+                max_rss(&s.runs),
                 exponent,
             ]
         })

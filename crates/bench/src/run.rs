@@ -44,6 +44,10 @@ pub struct SeedRun {
     pub error: Option<String>,
     /// The dissection (verified), to save.
     pub found: Option<Found>,
+    /// The peak resident set size of the process during the run, in bytes
+    /// (see [`crate::cpu::peak_rss`]; the whole process's, so it includes
+    /// what the harness itself holds), where the platform tells it.
+    pub peak_rss: Option<u64>,
 }
 
 impl SeedRun {
@@ -101,6 +105,7 @@ pub fn run_mode(
         last_level: (0, None),
         error: None,
         found: None,
+        peak_rss: None,
     };
     let config = RunConfig {
         strategy: mode.strategy,
@@ -128,10 +133,12 @@ pub fn run_mode(
             return run;
         }
     };
+    let rss_reset = crate::cpu::reset_peak_rss();
     let cpu_start = crate::cpu::process_cpu_time();
     let start = Instant::now();
     let report = dissect_engine::run(figures, &[], &run_options, &AtomicBool::new(false), &());
     run.total = start.elapsed();
+    run.peak_rss = crate::cpu::peak_rss().filter(|_| rss_reset);
     run.cpu = crate::cpu::process_cpu_time()
         .zip(cpu_start)
         .map(|(end, start)| end.saturating_sub(start));

@@ -371,6 +371,7 @@ fn seed_run(seed: u64, pieces: Option<usize>, first: Option<u64>, total: u64) ->
         ),
         error: None,
         found: None,
+        peak_rss: Some((20 + 3 * seed) << 20),
     }
 }
 
@@ -614,4 +615,35 @@ fn replays_count_the_waiting_at_batch_barriers() {
     // Levels add up.
     let both = replay_levels(&[d.to_vec(), vec![2.0, 2.0]], 2, 2);
     assert_eq!((both.makespan, both.work), (6.0, 10.0));
+}
+
+// -------------------------------------------------------------- peak RSS
+
+#[test]
+fn peak_rss_is_read_from_proc_status_and_can_be_reset() {
+    let status = "Name:\tx\nVmPeak:\t  9000 kB\nVmHWM:\t   2048 kB\nVmRSS:\t 1024 kB\n";
+    assert_eq!(dissect_bench::cpu::parse_status_hwm(status), Some(2 << 20));
+    assert_eq!(dissect_bench::cpu::parse_status_hwm("VmHWM: 12 MB\n"), None);
+    assert_eq!(dissect_bench::cpu::parse_status_hwm("VmRSS: 12 kB\n"), None);
+    if cfg!(target_os = "linux") {
+        // 64 MiB touched and freed: the peak covers it until a reset.
+        let block = vec![1u8; 64 << 20];
+        let touched = std::hint::black_box(&block).iter().step_by(4096).count();
+        assert_eq!(touched, 16384);
+        let with_block = dissect_bench::cpu::peak_rss().expect("VmHWM");
+        assert!(with_block >= 64 << 20, "{with_block}");
+        drop(block);
+        assert!(dissect_bench::cpu::reset_peak_rss());
+        let after = dissect_bench::cpu::peak_rss().expect("VmHWM");
+        assert!(after + (32 << 20) < with_block, "{after} vs {with_block}");
+        // A run reports its own peak.
+        let a = square("###\n#..\n");
+        let b = square("##\n##\n");
+        let r = run_seed(&[a, b], &quick(), None);
+        assert!(
+            r.peak_rss.is_some_and(|p| p > 0 && p < with_block),
+            "{:?}",
+            r.peak_rss
+        );
+    }
 }
