@@ -57,3 +57,20 @@ pub fn parse_status_hwm(status: &str) -> Option<u64> {
     let kib: u64 = it.next()?.parse().ok()?;
     (it.next() == Some("kB")).then_some(kib * 1024)
 }
+
+/// CPU time of the calling thread so far (`CLOCK_THREAD_CPUTIME_ID`, to the
+/// nanosecond), or `None` off Linux.
+pub fn thread_cpu_time() -> Option<Duration> {
+    #[cfg(target_os = "linux")]
+    {
+        use rustix::time::{clock_gettime, ClockId};
+        let t = clock_gettime(ClockId::ThreadCPUTime);
+        let secs = u64::try_from(t.tv_sec).ok()?;
+        let nanos = u32::try_from(t.tv_nsec).ok()?;
+        Some(Duration::new(secs, nanos))
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        None
+    }
+}

@@ -10,6 +10,7 @@ use clap::Parser;
 use dissect_bench::manifest::{Instance, Manifest};
 use dissect_bench::report::{self, InstanceResult, ScaleStep, Style};
 use dissect_bench::run::SeedRun;
+use dissect_bench::schedule::REPLAY_THREADS;
 use dissect_bench::{cpu, scale, Plan};
 use dissect_core::io::format_figure;
 use dissect_core::solver::Options;
@@ -113,6 +114,12 @@ struct Args {
     /// Extra rounds of explorations for near-miss levels (0: the paper's schedule).
     #[arg(long, value_name = "N")]
     extra_rounds: Option<usize>,
+    /// Record every exploration's time (thread CPU) and replay each run's
+    /// levels on 1, 2, 4, 8 and 16 simulated threads, with a barrier after
+    /// every batch and without: makespan, speed-up and waiting fraction.
+    /// Records on one solver thread (--threads 1, the default here).
+    #[arg(long)]
+    replay: bool,
 }
 
 fn main() -> ExitCode {
@@ -139,7 +146,7 @@ fn run(args: Args) -> Result<bool> {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("{}: cannot create directory", dir.display()))?;
     }
-    println!("{}", settings(&plan, &args, style));
+    println!("{}", settings(&plan, style));
     let load_before = cpu::load_average();
     if args.scaling {
         let instance = manifest.get(&args.scale_instance)?;
@@ -162,6 +169,10 @@ fn run(args: Args) -> Result<bool> {
         );
         println!("{}", heading(&what, style));
         print!("{}", report::scale_table(&steps, style));
+        for s in &steps {
+            let name = format!("{} ×{}", instance.name, s.k);
+            print_replays(&name, &s.runs, plan.options.batch, style);
+        }
         println!("\n{}", load_note(load_before, cpu::load_average()));
         return Ok(!steps.iter().flat_map(|s| &s.runs).any(SeedRun::is_error));
     }
@@ -182,6 +193,9 @@ fn run(args: Args) -> Result<bool> {
     if args.per_seed {
         println!("\n{}", heading("Every run", style));
         print!("{}", report::seed_table(&results, style));
+    }
+    for r in &results {
+        print_replays(&r.name, &r.runs, plan.options.batch, style);
     }
     println!("\n{}", load_note(load_before, cpu::load_average()));
     let errors: Vec<String> = results
@@ -210,10 +224,13 @@ fn plan(args: &Args) -> Result<Plan> {
             bail!("--area-weight must be >= 0, got {w}");
         }
     }
+    if args.replay && args.threads > 1 {
+        bail!("--replay records exploration times on one solver thread: leave --threads out or give 1");
+    }
     let d = Options::default();
     let options = Options {
         mirror: !args.no_mirror,
-        threads: args.threads,
+        threads: if args.replay { 1 } else { args.threads },
         max_pieces: args.max_pieces,
         area_weight: args.area_weight.unwrap_or(d.area_weight),
         explorations: args.explorations.unwrap_or(d.explorations),
@@ -241,6 +258,7 @@ fn plan(args: &Args) -> Result<Plan> {
                 dissect_engine::Strategy::Anytime
             },
             prove: !args.no_prove,
+            record: args.replay,
         },
     })
 }
@@ -264,7 +282,7 @@ fn select<'m>(manifest: &'m Manifest, args: &Args) -> Result<Vec<&'m Instance>> 
 }
 
 /// A line saying how the runs were made.
-fn settings(plan: &Plan, args: &Args, style: Style) -> String {
+fn settings(plan: &Plan, style: Style) -> String {
     let o = &plan.options;
     let limit =
         |l: Option<Duration>| l.map_or("none".to_string(), |d| format!("{} s", report::secs(d)));
@@ -274,10 +292,10 @@ fn settings(plan: &Plan, args: &Args, style: Style) -> String {
         seeds.join(","),
         limit(plan.time_limit_2d),
         limit(plan.time_limit_3d),
-        if args.threads == 0 {
+        if o.threads == 0 {
             "all cores".to_string()
         } else {
-            args.threads.to_string()
+            o.threads.to_string()
         },
         o.explorations,
         o.iterations,
@@ -313,6 +331,27 @@ fn heading(text: &str, style: Style) -> String {
     match style {
         Style::Markdown => format!("#### {text}\n"),
         Style::Text => format!("{text}\n"),
+    }
+}
+
+/// The schedule replay of every run that recorded its explorations.
+fn print_replays(name: &str, runs: &[SeedRun], batch: usize, style: Style) {
+    for r in runs {
+        let Some(rec) = &r.recording else { continue };
+        let what = format!(
+            "Schedule replay: {name} seed {} (levels {}, explorations {}, exploration work {:.2} s of {}; the run's CPU {} s)",
+            r.seed,
+            rec.levels.len(),
+            rec.explorations(),
+            rec.work(),
+            rec.clock,
+            r.cpu.map_or("-".to_string(), report::secs),
+        );
+        println!("\n{}", heading(&what, style));
+        print!(
+            "{}",
+            report::replay_table(rec, batch, &REPLAY_THREADS, style)
+        );
     }
 }
 

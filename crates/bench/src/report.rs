@@ -377,6 +377,63 @@ pub fn scale_table(steps: &[ScaleStep], style: Style) -> String {
     table(&headers, &rows, style)
 }
 
+/// The replay of a recorded run on each of `threads` simulated threads:
+/// makespan, speed-up over one thread and waiting fraction, with a barrier
+/// after every `batch` explorations and without barriers (levels keep their
+/// barriers in both).
+pub fn replay_table(
+    recording: &crate::schedule::Recording,
+    batch: usize,
+    threads: &[usize],
+    style: Style,
+) -> String {
+    use crate::schedule::replay_levels;
+    let batched = format!("makespan s (batches of {batch})");
+    let headers = [
+        "threads",
+        batched.as_str(),
+        "speed-up",
+        "waiting",
+        "makespan s (no barriers)",
+        "speed-up",
+        "waiting",
+        "barriers cost",
+    ];
+    let levels = recording.durations();
+    let one = |b| replay_levels(&levels, b, 1).makespan;
+    let (one_batched, one_free) = (one(batch), one(0));
+    let speedup = |one: f64, t: f64| {
+        if t > 0.0 {
+            format!("{:.2}", one / t)
+        } else {
+            "-".to_string()
+        }
+    };
+    let share = |x: f64| format!("{:.1} %", 100.0 * x);
+    let rows: Vec<Vec<String>> = threads
+        .iter()
+        .map(|&t| {
+            let b = replay_levels(&levels, batch, t);
+            let f = replay_levels(&levels, 0, t);
+            vec![
+                t.to_string(),
+                format!("{:.3}", b.makespan),
+                speedup(one_batched, b.makespan),
+                share(b.waiting()),
+                format!("{:.3}", f.makespan),
+                speedup(one_free, f.makespan),
+                share(f.waiting()),
+                if f.makespan > 0.0 {
+                    format!("{:+.1} %", 100.0 * (b.makespan / f.makespan - 1.0))
+                } else {
+                    "-".to_string()
+                },
+            ]
+        })
+        .collect();
+    table(&headers, &rows, style)
+}
+
 /// Lays out a table.
 pub fn table(headers: &[&str], rows: &[Vec<String>], style: Style) -> String {
     let mut out = String::new();

@@ -7,7 +7,9 @@ use std::time::{Duration, Instant};
 
 use dissect_core::solver::{Found, Options};
 use dissect_core::Figure;
-use dissect_engine::{RunConfig, RunOptions, Strategy};
+use dissect_engine::{EngineObserver, RunConfig, RunOptions, Strategy};
+
+use crate::schedule::{Recorder, Recording};
 
 /// What one seed produced.
 #[derive(Clone, Debug, PartialEq)]
@@ -48,6 +50,9 @@ pub struct SeedRun {
     /// (see [`crate::cpu::peak_rss`]; the whole process's, so it includes
     /// what the harness itself holds), where the platform tells it.
     pub peak_rss: Option<u64>,
+    /// Every exploration's time, level by level, when the mode records
+    /// them.
+    pub recording: Option<Recording>,
 }
 
 impl SeedRun {
@@ -65,6 +70,9 @@ pub struct Mode {
     pub strategy: Strategy,
     /// Whether the exact lower-bound search runs beside.
     pub prove: bool,
+    /// Whether every exploration's time is recorded (see
+    /// [`crate::schedule::Recorder`]: exact on one solver thread).
+    pub record: bool,
 }
 
 impl Default for Mode {
@@ -73,6 +81,7 @@ impl Default for Mode {
         Mode {
             strategy: Strategy::Anytime,
             prove: true,
+            record: false,
         }
     }
 }
@@ -106,6 +115,7 @@ pub fn run_mode(
         error: None,
         found: None,
         peak_rss: None,
+        recording: None,
     };
     let config = RunConfig {
         strategy: mode.strategy,
@@ -136,9 +146,21 @@ pub fn run_mode(
     let rss_reset = crate::cpu::reset_peak_rss();
     let cpu_start = crate::cpu::process_cpu_time();
     let start = Instant::now();
-    let report = dissect_engine::run(figures, &[], &run_options, &AtomicBool::new(false), &());
+    let recorder = mode.record.then(Recorder::new);
+    let observer: &dyn EngineObserver = match &recorder {
+        Some(r) => r,
+        None => &(),
+    };
+    let report = dissect_engine::run(
+        figures,
+        &[],
+        &run_options,
+        &AtomicBool::new(false),
+        observer,
+    );
     run.total = start.elapsed();
     run.peak_rss = crate::cpu::peak_rss().filter(|_| rss_reset);
+    run.recording = recorder.map(Recorder::finish);
     run.cpu = crate::cpu::process_cpu_time()
         .zip(cpu_start)
         .map(|(end, start)| end.saturating_sub(start));

@@ -372,6 +372,7 @@ fn seed_run(seed: u64, pieces: Option<usize>, first: Option<u64>, total: u64) ->
         error: None,
         found: None,
         peak_rss: Some((20 + 3 * seed) << 20),
+        recording: None,
     }
 }
 
@@ -646,4 +647,178 @@ fn peak_rss_is_read_from_proc_status_and_can_be_reset() {
             r.peak_rss
         );
     }
+}
+
+// ------------------------------------------------------ recorded schedules
+
+#[test]
+fn the_threads_cpu_time_counts_its_own_work_only() {
+    let Some(start) = dissect_bench::cpu::thread_cpu_time() else {
+        return; // not on Linux: recordings fall back to wall time
+    };
+    // Another thread's work does not count.
+    std::thread::spawn(|| {
+        let t = std::time::Instant::now();
+        while t.elapsed() < Duration::from_millis(50) {
+            std::hint::black_box(0u64);
+        }
+    })
+    .join()
+    .expect("joins");
+    let mid = dissect_bench::cpu::thread_cpu_time().expect("again");
+    assert!(mid - start < Duration::from_millis(25), "{:?}", mid - start);
+    // Its own does, to well under a millisecond.
+    let mut x = 0u64;
+    while dissect_bench::cpu::thread_cpu_time().expect("again") - mid < Duration::from_millis(30) {
+        x = std::hint::black_box(x + 1);
+    }
+    let end = dissect_bench::cpu::thread_cpu_time().expect("again");
+    assert!(end - mid >= Duration::from_millis(30) && end - mid < Duration::from_millis(31));
+}
+
+#[test]
+fn the_replay_table_matches_its_golden_files() {
+    use dissect_bench::report::replay_table;
+    use dissect_bench::schedule::{Clock, RecordedLevel, Recording};
+    // Level 1: one slow exploration per batch of 4; level 2: even work.
+    let rec = Recording {
+        clock: Clock::ThreadCpu,
+        levels: vec![
+            RecordedLevel {
+                level: 1,
+                seconds: vec![4.0, 1.0, 1.0, 1.0, 4.0, 1.0, 1.0, 1.0],
+            },
+            RecordedLevel {
+                level: 2,
+                seconds: vec![1.0; 8],
+            },
+        ],
+    };
+    assert_eq!((rec.explorations(), rec.work()), (16, 22.0));
+    // 2 threads with barriers: level 1 is 4 + 4 s, level 2 is 2 + 2 s.
+    // Without: level 1 is 6 s ({4, 1, 1} | {1, 1, 4} ... by list order:
+    // 4 | 1 1 1 4 -> 4 vs 7, then 1 1 1 -> 7 vs 7), level 2 is 4 s.
+    for (style, ext) in [(Style::Text, "txt"), (Style::Markdown, "md")] {
+        golden(
+            &format!("replay.{ext}"),
+            &replay_table(&rec, 4, &[1, 2, 4, 16], style),
+        );
+    }
+}
+
+#[test]
+fn a_recorded_run_times_every_exploration_it_counts() {
+    use dissect_bench::run::{run_mode, Mode};
+    use dissect_bench::schedule::replay_levels;
+    let m = Manifest::load(&shared().join("instances")).expect("shared manifest");
+    let inst = m.get("rect10x7-hole-to-square8").expect("instance");
+    let figures = inst.load_figures(m.root()).expect("loads");
+    let options = Options {
+        threads: 1,
+        seed: 3,
+        ..quick()
+    };
+    let mode = Mode {
+        strategy: dissect_engine::Strategy::Paper,
+        prove: false,
+        record: true,
+    };
+    let r = run_mode(&figures, &options, mode, None);
+    assert_eq!(r.error, None);
+    let rec = r.recording.as_ref().expect("recorded");
+    assert!(rec.explorations() > 0);
+    // The run counts level 0 (are the figures congruent?) as one.
+    assert_eq!(rec.explorations() + 1, r.explorations, "{rec:?}");
+    // The paper's schedule: levels one after the other, from 1 pieces up.
+    let levels: Vec<usize> = rec.levels.iter().map(|l| l.level).collect();
+    assert_eq!(levels, (1..=levels.len()).collect::<Vec<_>>());
+    assert!(rec
+        .levels
+        .iter()
+        .flat_map(|l| &l.seconds)
+        .all(|s| *s >= 0.0));
+    // Exploration work is part of the run's time.
+    let work = rec.work();
+    assert!(work > 0.0);
+    let bound = match rec.clock {
+        dissect_bench::schedule::Clock::ThreadCpu => r.cpu.expect("cpu").as_secs_f64() + 0.05,
+        dissect_bench::schedule::Clock::Wall => r.total.as_secs_f64(),
+    };
+    assert!(work <= bound, "{work} > {bound}");
+    // One simulated thread runs it all back to back.
+    let one = replay_levels(&rec.durations(), 16, 1);
+    assert!((one.makespan - work).abs() < 1e-9);
+    // Not recording leaves no recording.
+    let plain = run_mode(
+        &figures,
+        &options,
+        Mode {
+            record: false,
+            ..mode
+        },
+        None,
+    );
+    assert_eq!(plain.recording, None);
+    assert_eq!(plain.found, r.found, "recording does not change the answer");
+}
+
+#[test]
+fn the_binary_replays_recorded_runs() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let root = dir.path().join("instances");
+    std::fs::create_dir_all(root.join("l-to-bar")).expect("mkdir");
+    std::fs::write(root.join("l-to-bar/a.txt"), "###\n#..\n").expect("write");
+    std::fs::write(root.join("l-to-bar/b.txt"), "##\n##\n").expect("write");
+    std::fs::write(
+        root.join("manifest.json"),
+        r#"[{"name": "l-to-bar", "lattice": "square", "reference": 2,
+             "files": ["a.txt", "b.txt"], "area": 4}]"#,
+    )
+    .expect("write");
+    let run = |extra: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_dissect-bench"))
+            .arg(&root)
+            .args([
+                "--seeds",
+                "1",
+                "--time-limit",
+                "60",
+                "--paper",
+                "--no-prove",
+            ])
+            .args(["--explorations", "24", "--keep", "6", "--iterations", "20"])
+            .args(extra)
+            .output()
+            .expect("runs")
+    };
+    let out = run(&["--replay"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+    assert!(stdout.contains("threads 1;"), "{stdout}");
+    assert!(
+        stdout.contains("Schedule replay: l-to-bar seed 1 (levels 1, explorations 16, "),
+        "{stdout}"
+    );
+    let rows: Vec<&str> = stdout
+        .lines()
+        .skip_while(|l| !l.starts_with("Schedule replay"))
+        .skip(4)
+        .take_while(|l| !l.is_empty())
+        .collect();
+    let firsts: Vec<&str> = rows
+        .iter()
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    assert_eq!(firsts, ["1", "2", "4", "8", "16"], "{stdout}");
+    // One thread: speed-up 1, no waiting.
+    let one: Vec<&str> = rows[0].split_whitespace().collect();
+    assert_eq!(
+        (one[2], one[3], one[6], one[7]),
+        ("1.00", "0.0", "1.00", "0.0"),
+        "{stdout}"
+    );
+    // Recording needs one solver thread.
+    let out = run(&["--replay", "--threads", "2"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("one solver thread"));
 }
