@@ -398,6 +398,9 @@ pub fn replay_table(
         "speed-up",
         "waiting",
         "barriers cost",
+        "solver's window",
+        "makespan s (window)",
+        "waiting (window)",
     ];
     let levels = recording.durations();
     let one = |b| replay_levels(&levels, b, 1).makespan;
@@ -415,6 +418,8 @@ pub fn replay_table(
         .map(|&t| {
             let b = replay_levels(&levels, batch, t);
             let f = replay_levels(&levels, 0, t);
+            let w = crate::schedule::window(batch, t);
+            let wr = replay_levels(&levels, w, t);
             vec![
                 t.to_string(),
                 format!("{:.3}", b.makespan),
@@ -428,6 +433,9 @@ pub fn replay_table(
                 } else {
                     "-".to_string()
                 },
+                w.to_string(),
+                format!("{:.3}", wr.makespan),
+                share(wr.waiting()),
             ]
         })
         .collect();

@@ -19,6 +19,15 @@ use dissect_engine::{EngineEvent, EngineObserver};
 /// The simulated thread counts of a replay.
 pub const REPLAY_THREADS: [usize; 5] = [1, 2, 4, 8, 16];
 
+/// The explorations between two barriers of the solver's pool on
+/// `threads` threads: it runs 4 explorations per thread ahead of the batch
+/// being decided, in whole batches, at most 8 batches (the constants of
+/// `dissect_core::solver::Search::level`, repeated here).
+pub fn window(batch: usize, threads: usize) -> usize {
+    let batch = batch.max(1);
+    batch * (4 * threads.max(1)).div_ceil(batch).clamp(1, 8)
+}
+
 /// One level's schedule on `threads` threads.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Replay {

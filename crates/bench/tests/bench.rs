@@ -695,6 +695,20 @@ fn the_replay_table_matches_its_golden_files() {
         ],
     };
     assert_eq!((rec.explorations(), rec.work()), (16, 22.0));
+    // The solver's window: whole batches, 4 explorations per thread, at
+    // most 8 batches.
+    use dissect_bench::schedule::window;
+    assert_eq!(
+        [
+            window(16, 1),
+            window(16, 4),
+            window(16, 8),
+            window(16, 16),
+            window(16, 64)
+        ],
+        [16, 16, 32, 64, 128]
+    );
+    assert_eq!((window(4, 2), window(4, 16)), (8, 32));
     // 2 threads with barriers: level 1 is 4 + 4 s, level 2 is 2 + 2 s.
     // Without: level 1 is 6 s ({4, 1, 1} | {1, 1, 4} ... by list order:
     // 4 | 1 1 1 4 -> 4 vs 7, then 1 1 1 -> 7 vs 7), level 2 is 4 s.
