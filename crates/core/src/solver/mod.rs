@@ -703,6 +703,26 @@ impl<'a> Search<'a> {
         None
     }
 
+    /// What a level settles: its valid result of least area variance, else
+    /// (when the level ran to its end) one of its near misses finished by
+    /// the repairer.
+    fn settle(
+        &self,
+        level: &Level,
+        pieces: usize,
+        repairer: Option<&dyn Repair>,
+        tries: usize,
+    ) -> Option<(Candidate, Score, Via)> {
+        if let Some((c, s)) = level.best_valid() {
+            return Some((c.clone(), *s, Via::Search));
+        }
+        if level.stopped {
+            return None;
+        }
+        let (c, s) = self.repair(repairer?, level, pieces, tries)?;
+        Some((c, s, Via::Repair))
+    }
+
     /// A candidate from cells per piece per figure, when they cover every
     /// figure exactly and the solver's own score calls it valid.
     fn candidate_of(&self, pieces: &[Vec<Vec<Cell>>]) -> Option<(Candidate, Score)> {
@@ -930,15 +950,7 @@ where
         }
         let down = search.level(round, level, From::Above(cand, 0))?;
         outcome.explorations += down.results.len();
-        let mut step = down.best_valid().cloned().map(|(c, s)| (c, s, Via::Search));
-        if step.is_none() && !down.stopped {
-            if let Some(r) = repairer {
-                step = search
-                    .repair(r, &down, level + 1, anytime.repair_tries)
-                    .map(|(c, s)| (c, s, Via::Repair));
-            }
-        }
-        if let Some((c, s, via)) = step {
+        if let Some((c, s, via)) = search.settle(&down, level + 1, repairer, anytime.repair_tries) {
             improved |= improve(best, outcome, c, s, level, round, via);
         }
     }
@@ -1297,18 +1309,14 @@ pub fn solve_anytime_with(
                 }
                 let result = search.level(0, level, From::Lifted(&parents))?;
                 outcome.explorations += result.results.len();
-                if let Some((c, s)) = result.best_valid().cloned() {
+                if let Some((c, s, _)) =
+                    search.settle(&result, pieces, repair, anytime.repair_tries)
+                {
                     improve(&mut best, &mut outcome, c, s, level, 0, Via::Coarse);
                     break;
                 }
                 if result.stopped || result.results.is_empty() {
                     break;
-                }
-                if let Some(r) = repair {
-                    if let Some((c, s)) = search.repair(r, &result, pieces, anytime.repair_tries) {
-                        improve(&mut best, &mut outcome, c, s, level, 0, Via::Coarse);
-                        break;
-                    }
                 }
                 parents = result.kept(options.keep);
                 level += 1;
@@ -1336,18 +1344,7 @@ pub fn solve_anytime_with(
             let level = pieces - 1;
             let result = search.level(round, level, From::Above(&parent, attempt * n))?;
             outcome.explorations += result.results.len();
-            let mut step = result
-                .best_valid()
-                .cloned()
-                .map(|(c, s)| (c, s, Via::Search));
-            if step.is_none() && !result.stopped {
-                if let Some(r) = repair {
-                    step = search
-                        .repair(r, &result, pieces, anytime.repair_tries)
-                        .map(|(c, s)| (c, s, Via::Repair));
-                }
-            }
-            match step {
+            match search.settle(&result, pieces, repair, anytime.repair_tries) {
                 Some((c, s, via)) => {
                     if !improve(best, outcome, c, s, level, round, via) {
                         break;
@@ -1390,16 +1387,12 @@ pub fn solve_anytime_with(
             outcome.explorations += result.results.len();
             outcome.last_pieces = outcome.last_pieces.max(pieces);
             outcome.best_mismatch = Some(result.best_mismatch());
-            if let Some((c, s)) = result.best_valid().cloned() {
-                return Ok(improve(best, outcome, c, s, level, round, Via::Search));
+            if let Some((c, s, via)) = search.settle(&result, pieces, repair, anytime.repair_tries)
+            {
+                return Ok(improve(best, outcome, c, s, level, round, via));
             }
             if result.stopped || result.results.is_empty() {
                 break;
-            }
-            if let Some(r) = repair {
-                if let Some((c, s)) = search.repair(r, &result, pieces, anytime.repair_tries) {
-                    return Ok(improve(best, outcome, c, s, level, round, Via::Repair));
-                }
             }
             parents = result.kept(options.keep);
             ladder_ended = level + 1 == target;
