@@ -1,0 +1,449 @@
+//! The anytime search ([`solve_anytime`]): the constructive dissection,
+//! then rounds that look for fewer pieces. A [`Run`] holds the run's state;
+//! its steps are the round-0 ladder, the descent, the coarse lift and climb
+//! (large figures), the plateau, and the incumbent's keep-best
+//! ([`Incumbent::improve`]).
+
+use std::sync::atomic::AtomicBool;
+
+use crate::figure::Figure;
+use crate::solver::candidate::{Candidate, Score};
+use crate::solver::explore::Executor;
+use crate::solver::incumbent::Incumbent;
+use crate::solver::plateau::{plateau_descents, plateau_walk};
+use crate::solver::search::{From, Level, Search};
+use crate::solver::{coarse, greedy};
+use crate::solver::{Event, Observer, Options, Outcome, Repair, SolveError, Via};
+
+/// Levels climbed at full resolution from a lifted coarse candidate.
+const CLIMB: usize = 2;
+
+/// Attempts (fresh streams) at one descent step while it ends near misses.
+const DESCENT_ATTEMPTS: usize = 4;
+
+/// Settings of [`solve_anytime`] beyond [`Options`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Anytime {
+    /// End after this many rounds in a row that found no fewer pieces
+    /// (`None`: only a stop, or having nothing left to try, ends the run).
+    pub idle_rounds: Option<usize>,
+    /// Near-miss candidates handed to the repairer per level.
+    pub repair_tries: usize,
+    /// End after this many rounds (`None`: no such cap).
+    pub max_rounds: Option<usize>,
+    /// Keep searching at the best piece count, not only below it: every
+    /// round's ladder runs up to the best count's level, so more valid
+    /// dissections with the fewest pieces reach [`Observer::judge`]
+    /// (several solutions). `false`: each round looks for fewer pieces only.
+    pub plateau: bool,
+}
+
+impl Default for Anytime {
+    fn default() -> Anytime {
+        Anytime {
+            idle_rounds: Some(1),
+            repair_tries: 2,
+            max_rounds: None,
+            plateau: false,
+        }
+    }
+}
+
+/// The anytime search: a valid dissection first (the constructive greedy
+/// dissection, never fails), then rounds of the paper's level schedule with
+/// fresh random streams, each looking for fewer pieces than the best so
+/// far; near misses go to `repair`. Every improvement is reported as
+/// [`Event::Improved`]; the answer never has more pieces than an earlier
+/// one.
+///
+/// Without a stop the run ends after [`Anytime::idle_rounds`] rounds
+/// without improvement, or when two pieces are reached (one is impossible:
+/// the figures are not congruent), so it is the same for any thread count.
+pub fn solve_anytime(
+    figures: &[Figure],
+    options: &Options,
+    anytime: &Anytime,
+    stop: &AtomicBool,
+    observer: &dyn Observer,
+    repair: Option<&dyn Repair>,
+) -> Result<Outcome, SolveError> {
+    solve_anytime_with(figures, options, anytime, stop, observer, repair, None)
+}
+
+/// [`solve_anytime`], with the explorations run by `executor` (`None`: the
+/// solver's thread pool); the same answer when it returns what
+/// [`Explorer::explore`](crate::solver::Explorer::explore) returns.
+pub fn solve_anytime_with(
+    figures: &[Figure],
+    options: &Options,
+    anytime: &Anytime,
+    stop: &AtomicBool,
+    observer: &dyn Observer,
+    repair: Option<&dyn Repair>,
+    executor: Option<&dyn Executor>,
+) -> Result<Outcome, SolveError> {
+    let search = Search::new(figures, options, stop, observer, executor)?;
+    let (whole, s0) = search.level_zero();
+    if s0.valid {
+        return Ok(congruent(&search, &whole, &s0));
+    }
+    let mut run = Run::new(&search, anytime, repair, s0.mismatch);
+    run.constructive();
+    // Large figures: the level search costs about the same per level at
+    // any resolution, so it runs on the figures at half resolution (halved
+    // again while they are large); the coarse dissection is lifted, refined
+    // at full resolution and, when it is a near miss, repaired. The ladder
+    // at full resolution is then not run: the coarse search is the ladder.
+    let cells = figures[0].len();
+    let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
+    if large && !search.stopped() {
+        run.coarse()?;
+    }
+    let mut idle = 0;
+    // On large figures the coarse step was round 0.
+    let first_round = usize::from(large);
+    if large {
+        run.inc.outcome.rounds = 1;
+    }
+    for round in first_round.. {
+        if !run.round_starts(round, idle) {
+            break;
+        }
+        let improved = run.round(round, large)?;
+        if improved {
+            idle = 0;
+        } else {
+            idle += 1;
+        }
+    }
+    Ok(run.finish())
+}
+
+/// The figures are congruent: one piece, found at level 0.
+fn congruent(search: &Search<'_>, whole: &Candidate, s0: &Score) -> Outcome {
+    let found = search.found(whole, s0, 0);
+    search.observer.on_event(&Event::Improved {
+        pieces: 1,
+        level: 0,
+        round: 0,
+        via: Via::Search,
+    });
+    Outcome {
+        found: Some(found),
+        best_mismatch: Some(0),
+        last_pieces: 1,
+        stopped: false,
+        explorations: 1,
+        rounds: 0,
+    }
+}
+
+/// One anytime run: its fixed settings and its incumbent. Each method is a
+/// step of the run.
+struct Run<'r, 'a> {
+    search: &'r Search<'a>,
+    anytime: &'r Anytime,
+    repair: Option<&'r dyn Repair>,
+    /// The cap on pieces ([`Options::max_pieces`], at most the area).
+    max_pieces: usize,
+    /// The largest matching cost that counts as a near miss.
+    near_miss: u64,
+    /// 1: rounds look below the best count; 0 (the plateau, several
+    /// solutions): at the best count too.
+    below: usize,
+    /// The best dissection so far and the outcome.
+    inc: Incumbent,
+}
+
+impl<'r, 'a> Run<'r, 'a> {
+    /// A run after level 0, whose matching cost was `mismatch`.
+    fn new(
+        search: &'r Search<'a>,
+        anytime: &'r Anytime,
+        repair: Option<&'r dyn Repair>,
+        mismatch: u64,
+    ) -> Run<'r, 'a> {
+        let (figures, options) = (search.figures, search.options);
+        let cells = figures[0].len();
+        let max_pieces = options.max_pieces.unwrap_or(cells).min(cells);
+        let outcome = Outcome {
+            found: None,
+            best_mismatch: Some(mismatch),
+            last_pieces: 1,
+            stopped: false,
+            explorations: 1,
+            rounds: 0,
+        };
+        Run {
+            search,
+            anytime,
+            repair,
+            max_pieces,
+            near_miss: options.near_miss(figures.len(), cells),
+            // The plateau (several solutions) searches at the best count too.
+            below: usize::from(!anytime.plateau),
+            inc: Incumbent::new(outcome, max_pieces),
+        }
+    }
+
+    /// The constructive dissection: every figure as the pivot, two ways of
+    /// keeping components; each one with fewer pieces is an improvement.
+    fn constructive(&mut self) {
+        let search = self.search;
+        'styles: for divisor in [2, 1] {
+            for pivot in 0..search.figures.len() {
+                if search.stopped() {
+                    break 'styles;
+                }
+                let mut cand =
+                    greedy::greedy(&search.problem, greedy::GreedyStyle { pivot, divisor });
+                let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
+                debug_assert!(score.valid, "the greedy dissection is valid");
+                search.judge(&cand, &mut score);
+                if score.valid {
+                    let level = cand.k - 1;
+                    self.inc.improve(search, cand, score, level, 0, Via::Greedy);
+                }
+            }
+        }
+    }
+
+    /// The coarse step (round 0 of large figures): the anytime search on
+    /// the figures at lower resolution, lifted ([`Run::lift`]), then, when
+    /// the lift is close to a dissection, the climb ([`Run::climb`]).
+    fn coarse(&mut self) -> Result<(), SolveError> {
+        let Some((cand, mut score)) = self.lift() else {
+            return Ok(());
+        };
+        let search = self.search;
+        search.judge(&cand, &mut score);
+        let level = cand.k.saturating_sub(1);
+        let mut done = false;
+        if score.valid {
+            done = self
+                .inc
+                .improve(search, cand.clone(), score, level, 0, Via::Coarse);
+        } else if let Some(r) = self.repair {
+            let near = Level {
+                results: vec![(cand.clone(), score)],
+                stopped: false,
+            };
+            if let Some((c, s)) = search.repair(r, &near, level + 1, 1) {
+                done = self.inc.improve(search, c, s, level, 0, Via::Coarse);
+            }
+        }
+        if !done {
+            self.climb(cand, score, level)?;
+        }
+        Ok(())
+    }
+
+    /// The dissection of the coarse figures (one round of the anytime
+    /// search, below the best so far), lifted and refined at full
+    /// resolution.
+    fn lift(&self) -> Option<(Candidate, Score)> {
+        let (search, options) = (self.search, self.search.options);
+        let max_pieces = self.max_pieces;
+        let best_pieces = self.inc.pieces().map_or(max_pieces, |k| k - 1);
+        let inner_options = Options {
+            max_pieces: Some(best_pieces.min(max_pieces)),
+            ..options.clone()
+        };
+        let inner = Anytime {
+            idle_rounds: Some(1),
+            max_rounds: Some(1),
+            ..self.anytime.clone()
+        };
+        let (stop, repair) = (search.stop, self.repair);
+        coarse::from_coarse(
+            search.figures,
+            &search.problem,
+            options,
+            options.seed,
+            stop,
+            |coarse_figures| {
+                solve_anytime_with(
+                    coarse_figures,
+                    &inner_options,
+                    &inner,
+                    stop,
+                    &(),
+                    repair,
+                    None,
+                )
+                .ok()?
+                .found
+            },
+        )
+    }
+
+    /// Not yet a dissection but close (a repairable distance): climbs the
+    /// paper's levels from the lifted candidate at `level` (one more piece
+    /// per level, at most CLIMB levels) while that stays below the best. A
+    /// lift far from any dissection (curved boundaries the coarse cells cut
+    /// differently) is left to the descent.
+    fn climb(&mut self, cand: Candidate, score: Score, level: usize) -> Result<(), SolveError> {
+        let search = self.search;
+        let options = search.options;
+        let close = score.mismatch <= 4 * self.near_miss;
+        let mut parents = vec![(cand, score)];
+        let top = if close { level + CLIMB } else { level };
+        let mut level = level + 1;
+        while !search.stopped() && level <= top {
+            let pieces = level + 1;
+            if self.inc.pieces().is_some_and(|k| pieces >= k) || pieces > self.max_pieces {
+                break;
+            }
+            let result = search.level(0, level, From::Lifted(&parents))?;
+            self.inc.outcome.explorations += result.results.len();
+            if let Some((c, s, _)) =
+                search.settle(&result, pieces, self.repair, self.anytime.repair_tries)
+            {
+                self.inc.improve(search, c, s, level, 0, Via::Coarse);
+                break;
+            }
+            if result.stopped || result.results.is_empty() {
+                break;
+            }
+            parents = result.kept(options.keep);
+            level += 1;
+        }
+        Ok(())
+    }
+
+    /// Whether round `round` runs after `idle` rounds without improvement;
+    /// if so, reports [`Event::RoundStarted`].
+    fn round_starts(&mut self, round: usize, idle: usize) -> bool {
+        let best_pieces = self.inc.pieces().unwrap_or(usize::MAX);
+        // Look for fewer pieces than the best so far (and no more than the
+        // cap); two pieces is the least there can be.
+        let target = best_pieces.saturating_sub(self.below).min(self.max_pieces);
+        if target < 2 || self.search.stopped() {
+            return false;
+        }
+        let anytime = self.anytime;
+        if anytime.idle_rounds.is_some_and(|n| idle >= n)
+            || anytime.max_rounds.is_some_and(|n| round >= n)
+        {
+            return false;
+        }
+        self.search.observer.on_event(&Event::RoundStarted {
+            round,
+            max_pieces: target,
+        });
+        self.inc.outcome.rounds = round + 1;
+        true
+    }
+
+    /// One round; whether it found fewer pieces. Round 0 of a small figure
+    /// runs the paper's ladder first (its schedule reaches the fewest
+    /// pieces there), then the descent from what it found; later rounds
+    /// descend first. Large figures only descend (their ladder ran on the
+    /// coarse figures). With the plateau, the walk ends the round.
+    fn round(&mut self, round: usize, large: bool) -> Result<bool, SolveError> {
+        let improved = if large {
+            self.descend(round)?
+        } else if round == 0 {
+            let a = self.ladder(round)?;
+            self.descend(round)? | a
+        } else {
+            let a = self.descend(round)?;
+            self.ladder(round)? | a
+        };
+        // The plateau walk: from the incumbent one piece up and down again,
+        // and exact repairs of small moves: other dissections with the best
+        // count (each seen by the judge), or fewer pieces.
+        if self.anytime.plateau && !self.search.stopped() {
+            Ok(plateau_walk(self.search, &mut self.inc, round, self.repair)? | improved)
+        } else {
+            Ok(improved)
+        }
+    }
+
+    /// The descent: one piece fewer than the incumbent, by merging two of
+    /// its pieces and refining (a near miss goes to the repairer, and earns
+    /// new attempts with fresh streams), for as long as that works.
+    fn descend(&mut self, round: usize) -> Result<bool, SolveError> {
+        let search = self.search;
+        let mut improved = false;
+        let mut attempt = 0;
+        let n = search.options.explorations.div_ceil(4).max(1);
+        while let Some((parent, _)) = self.inc.best.clone() {
+            let pieces = parent.k - 1;
+            if pieces < 2 || search.stopped() {
+                break;
+            }
+            let level = pieces - 1;
+            let result = search.level(round, level, From::Above(&parent, attempt * n))?;
+            self.inc.outcome.explorations += result.results.len();
+            match search.settle(&result, pieces, self.repair, self.anytime.repair_tries) {
+                Some((c, s, via)) => {
+                    if !self.inc.improve(search, c, s, level, round, via) {
+                        break;
+                    }
+                    improved = true;
+                    attempt = 0;
+                }
+                None => {
+                    attempt += 1;
+                    if result.stopped
+                        || attempt >= DESCENT_ATTEMPTS
+                        || result.best_mismatch() > self.near_miss
+                    {
+                        break;
+                    }
+                }
+            }
+        }
+        Ok(improved)
+    }
+
+    /// The ladder: the paper's levels from two pieces up, with this round's
+    /// streams, below the best so far (at it, with the plateau).
+    fn ladder(&mut self, round: usize) -> Result<bool, SolveError> {
+        let search = self.search;
+        let target = self
+            .inc
+            .pieces()
+            .unwrap_or(usize::MAX)
+            .saturating_sub(self.below)
+            .min(self.max_pieces);
+        let mut parents: Vec<(Candidate, Score)> = Vec::new();
+        let mut ladder_ended = false;
+        for level in 1..target {
+            if search.stopped() {
+                break;
+            }
+            let pieces = level + 1;
+            let result = search.level(round, level, From::Below(&parents))?;
+            let outcome = &mut self.inc.outcome;
+            outcome.explorations += result.results.len();
+            outcome.last_pieces = outcome.last_pieces.max(pieces);
+            outcome.best_mismatch = Some(result.best_mismatch());
+            if let Some((c, s, via)) =
+                search.settle(&result, pieces, self.repair, self.anytime.repair_tries)
+            {
+                return Ok(self.inc.improve(search, c, s, level, round, via));
+            }
+            if result.stopped || result.results.is_empty() {
+                break;
+            }
+            parents = result.kept(search.options.keep);
+            ladder_ended = level + 1 == target;
+        }
+        // The plateau: a ladder that found nothing up to the best count
+        // goes one level further and descends from there, into other
+        // dissections with the best count.
+        if self.anytime.plateau && ladder_ended && !search.stopped() {
+            let tries = self.anytime.repair_tries;
+            return plateau_descents(search, &mut self.inc, round, &parents, self.repair, tries);
+        }
+        Ok(false)
+    }
+
+    /// The outcome (the best dissection is already in it).
+    fn finish(mut self) -> Outcome {
+        self.inc.outcome.stopped |= self.search.stopped();
+        self.inc.outcome
+    }
+}
