@@ -10,7 +10,8 @@
 //!   the lower bound (`optimal`), the repair of near misses, and the
 //!   [`Report`].
 //! * [`Verified`]: a dissection that passed [`dissect_core::verify`]; the
-//!   only kind of dissection a [`Report`] holds.
+//!   only kind of dissection a [`Report`] holds; [`Verified::assemblies`]
+//!   counts the ways its pieces tile each figure.
 //! * [`EngineObserver`]: live events (level progress, improvements, bounds).
 //! * Puzzle runs ([`RunConfig::solutions`], [`RunConfig::rank`],
 //!   [`RunConfig::constraints`]): every candidate of the heuristic is judged
@@ -30,9 +31,10 @@ mod report;
 mod run;
 mod verified;
 
+pub use dissect_puzzle::assemblies::{AssemblyError, Count};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
 pub use options::{OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS};
 pub use repair::ExactRepair;
 pub use report::{End, Improvement, LowerBound, Ranking, Report, Solution, Source};
-pub use run::{run, run_with, EngineError, EngineEvent, EngineObserver, SLIVER_CELLS};
+pub use run::{check, run, run_with, EngineError, EngineEvent, EngineObserver, SLIVER_CELLS};
 pub use verified::Verified;

@@ -316,6 +316,17 @@ pub fn run(
     run_with(figures, names, options, stop, observer, None)
 }
 
+/// Checks what [`run`] checks before it starts: the figures make a
+/// dissection problem and the options' constraints fit them (a figure
+/// number in range, a checkerboard on the lattice) and are not impossible
+/// on their face ([`ConstraintError::is_impossible`]). A front end calls it
+/// to refuse a request at once rather than fail a started run.
+pub fn check(figures: &[Figure], options: &RunOptions) -> Result<(), EngineError> {
+    dissect_core::solver::check_figures(figures)?;
+    options.config().constraints.validate(figures)?;
+    Ok(())
+}
+
 /// [`run`], with the heuristic's explorations run by `executor` (`None`:
 /// the local thread pool; `dissect.ray` sends them to a Ray cluster). An
 /// executor that returns what [`dissect_core::solver::Explorer::explore`]
@@ -328,10 +339,9 @@ pub fn run_with(
     observer: &dyn EngineObserver,
     executor: Option<&dyn Executor>,
 ) -> Result<Report, EngineError> {
-    dissect_core::solver::check_figures(figures)?;
+    check(figures, options)?;
     let config = options.config();
     let constraints = &config.constraints;
-    constraints.validate(figures)?;
     let lattice = figures[0].lattice();
     let mirror = config.mirror && lattice.lattice().supports_mirror();
     let motions = Motions::new(lattice, mirror);

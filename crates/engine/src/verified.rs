@@ -1,8 +1,13 @@
 //! A dissection that passed the independent verifier.
 
+use std::sync::atomic::AtomicBool;
+use std::time::{Duration, Instant};
+
 use dissect_core::verify::verify;
 use dissect_core::Dissection;
 use dissect_core::{Cell, Figure, LatticeKind};
+use dissect_puzzle::assemblies::{count, AssemblyError, Count, CountLimits, PieceSet};
+use dissect_puzzle::Motions;
 
 /// A dissection checked by [`dissect_core::verify`] against its figures.
 ///
@@ -65,5 +70,37 @@ impl Verified {
         }
         let mean = a.iter().sum::<usize>() as f64 / a.len() as f64;
         a.iter().map(|&x| (x as f64 - mean).powi(2)).sum::<f64>() / a.len() as f64
+    }
+
+    /// In how many ways the pieces tile each of `figures` (the count of
+    /// `dissect assemblies`: [`dissect_puzzle::assemblies::count`], every
+    /// placement the lattice allows, mirror images as the dissection
+    /// allows them, identical pieces interchangeable), one [`Count`] per
+    /// figure. Each count stops after `time` or when `stop` is raised; a
+    /// count cut short says so ([`Count::complete`]) and its numbers are
+    /// lower bounds.
+    pub fn assemblies(
+        &self,
+        figures: &[Figure],
+        time: Duration,
+        stop: Option<&AtomicBool>,
+    ) -> Result<Vec<Count>, AssemblyError> {
+        let d = &self.dissection;
+        let pieces = d.pieces().first().cloned().unwrap_or_default();
+        let set = PieceSet::new(Motions::new(d.lattice(), d.mirror()), &pieces)?;
+        figures
+            .iter()
+            .map(|f| {
+                count(
+                    &set,
+                    f,
+                    CountLimits {
+                        stop,
+                        deadline: Instant::now().checked_add(time),
+                        progress: None,
+                    },
+                )
+            })
+            .collect()
     }
 }

@@ -229,3 +229,52 @@ fn impossible_constraints_are_typed_errors() {
     assert_eq!(checked(&r, &figures, &c), vec![vec![2, 2, 2]]);
     assert!(r.optimal);
 }
+
+#[test]
+fn a_verified_answer_counts_its_assemblies_and_check_refuses_early() {
+    // 2×3 into 1×6: two 3-cell bars, one way into each figure.
+    let figures = [square("###\n###\n"), square("######\n")];
+    let r = solve(&figures, config()).unwrap();
+    let best = r.best.unwrap();
+    let counts = best
+        .assemblies(&figures, std::time::Duration::from_secs(5), None)
+        .unwrap();
+    assert_eq!(counts.len(), 2);
+    for c in &counts {
+        assert!(c.complete && c.unique(), "{c:?}");
+        assert_eq!((c.tilings, c.up_to_symmetry), (1, 1));
+    }
+    // An L of three cells and one cell tile the 2×2 square in 4 ways, one
+    // up to the square's symmetries.
+    let sq = square("##\n##\n");
+    let l = dissect_engine::Verified::new(
+        LatticeKind::Square,
+        true,
+        vec!["a".into(), "b".into()],
+        &[sq.clone(), sq.clone()],
+        vec![
+            vec![vec![[0, 0, 0], [0, 1, 0], [1, 1, 0]], vec![[1, 0, 0]]],
+            vec![vec![[0, 0, 0], [0, 1, 0], [1, 1, 0]], vec![[1, 0, 0]]],
+        ],
+    )
+    .unwrap();
+    let c = &l
+        .assemblies(
+            std::slice::from_ref(&sq),
+            std::time::Duration::from_secs(5),
+            None,
+        )
+        .unwrap()[0];
+    assert_eq!((c.tilings, c.up_to_symmetry, c.complete), (4, 1, true));
+    // `check` refuses what `run` would refuse, before any search.
+    let options = RunOptions::new(RunConfig {
+        constraints: Constraints::none().with_checkerboard(true),
+        ..config()
+    })
+    .unwrap();
+    match dissect_engine::check(&[square("#.#\n.#.\n"), square("###\n")], &options) {
+        Err(EngineError::Constraints(e)) => assert!(e.is_impossible(), "{e}"),
+        r => panic!("{r:?}"),
+    }
+    assert!(dissect_engine::check(&figures, &options).is_ok());
+}

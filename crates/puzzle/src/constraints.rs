@@ -62,6 +62,19 @@ pub enum ConstraintError {
         /// The figure (1-based).
         figure: usize,
     },
+    /// Occurs when a region given by its cells is not named by a letter a-z.
+    #[error("a region is named by one letter a-z, not {0:?}")]
+    Letter(String),
+    /// Occurs when a region given by its cells has a cell the figure lacks.
+    #[error("region {letter:?}: cell {cell:?} is not a cell of figure {figure}")]
+    CellOutside {
+        /// The letter.
+        letter: char,
+        /// The cell's coordinates (as in the solution format).
+        cell: Vec<i64>,
+        /// The figure (1-based).
+        figure: usize,
+    },
     /// Occurs when a regions grid marks nothing.
     #[error("no region is marked (mark the cells to keep together with the letters a-z)")]
     NoRegion,
@@ -238,17 +251,12 @@ impl KeepRegions {
         let mut out = BTreeMap::new();
         for (letter, mut cells) in regions {
             if !letter.is_ascii_lowercase() {
-                return Err(ConstraintError::Character {
-                    line: 0,
-                    column: 0,
-                    found: letter,
-                });
+                return Err(ConstraintError::Letter(letter.to_string()));
             }
-            if cells.iter().any(|c| !fig.contains(*c)) {
-                return Err(ConstraintError::OutsideFigure {
-                    line: 0,
-                    column: 0,
+            if let Some(c) = cells.iter().find(|c| !fig.contains(**c)) {
+                return Err(ConstraintError::CellOutside {
                     letter,
+                    cell: fig.lattice().cell_coords(*c),
                     figure: figure + 1,
                 });
             }

@@ -200,3 +200,36 @@ fn impossible_and_malformed_constraints_are_told_apart() {
     let w = Constraints::none().with_symmetry_weight(f64::NAN);
     assert!(!w.validate_settings().unwrap_err().is_impossible());
 }
+
+#[test]
+fn regions_from_cells_name_a_bad_letter_or_cell() {
+    use std::collections::BTreeMap;
+    let square = fig("###\n###\n", LatticeKind::Square);
+    let figs = std::slice::from_ref(&square);
+    let k = KeepRegions::from_cells(
+        0,
+        BTreeMap::from([('b', vec![[2, 1, 0], [0, 0, 0], [2, 1, 0]]), ('c', vec![])]),
+        figs,
+    )
+    .unwrap();
+    let r: Vec<(char, Vec<Cell>)> = k.regions().map(|(l, c)| (l, c.to_vec())).collect();
+    assert_eq!(r, vec![('b', vec![[0, 0, 0], [2, 1, 0]])]);
+    let e = KeepRegions::from_cells(0, BTreeMap::from([('A', vec![[0, 0, 0]])]), figs).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "a region is named by one letter a-z, not \"A\""
+    );
+    assert!(!e.is_impossible());
+    let e = KeepRegions::from_cells(0, BTreeMap::from([('a', vec![[3, 0, 0]])]), figs).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "region 'a': cell [3, 0] is not a cell of figure 1"
+    );
+    let e = KeepRegions::from_cells(0, BTreeMap::from([('a', vec![])]), figs).unwrap_err();
+    assert_eq!(e, ConstraintError::NoRegion);
+    let e = KeepRegions::from_cells(1, BTreeMap::new(), figs).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "figure 2 does not exist (there are 1 figures, numbered from 1)"
+    );
+}

@@ -31,6 +31,17 @@ pub enum ApiError {
     /// the message names the figure (and line/column for texts).
     #[error("{0}")]
     BadFigure(String),
+    /// Occurs when the designer's constraints of a solve are malformed
+    /// (a region name that is not a letter, a cell outside its figure, a
+    /// size bound of 0, a checkerboard on a lattice without one, ...).
+    #[error("{0}")]
+    BadConstraints(String),
+    /// Occurs when the constraints are well formed but cannot all hold for
+    /// these figures (a smallest piece larger than the largest, a region
+    /// larger than `max_piece`, figures with different numbers of black
+    /// cells under `checkerboard`, ...).
+    #[error("{0}")]
+    ImpossibleConstraints(String),
     /// Occurs when a solution (for a download) cannot be read or drawn.
     #[error("{0}")]
     BadSolution(String),
@@ -81,12 +92,14 @@ impl ApiError {
     /// The HTTP status.
     pub fn status(&self) -> StatusCode {
         match self {
-            ApiError::BadJson { .. } | ApiError::UnknownLattice(_) | ApiError::BadValue(_) => {
-                StatusCode::BAD_REQUEST
-            }
-            ApiError::BadFigure(_) | ApiError::BadSolution(_) | ApiError::UnequalAreas(_) => {
-                StatusCode::UNPROCESSABLE_ENTITY
-            }
+            ApiError::BadJson { .. }
+            | ApiError::UnknownLattice(_)
+            | ApiError::BadValue(_)
+            | ApiError::BadConstraints(_) => StatusCode::BAD_REQUEST,
+            ApiError::BadFigure(_)
+            | ApiError::BadSolution(_)
+            | ApiError::UnequalAreas(_)
+            | ApiError::ImpossibleConstraints(_) => StatusCode::UNPROCESSABLE_ENTITY,
             ApiError::TooLarge(_) => StatusCode::PAYLOAD_TOO_LARGE,
             ApiError::Busy(_) | ApiError::PicturesBusy(_) => StatusCode::TOO_MANY_REQUESTS,
             ApiError::Unauthorized(_) => StatusCode::UNAUTHORIZED,
@@ -106,6 +119,8 @@ impl ApiError {
             ApiError::BadValue(_) => "bad_value",
             ApiError::BadFigure(_) => "bad_figure",
             ApiError::BadSolution(_) => "bad_solution",
+            ApiError::BadConstraints(_) => "bad_constraints",
+            ApiError::ImpossibleConstraints(_) => "impossible_constraints",
             ApiError::UnequalAreas(_) => "unequal_areas",
             ApiError::TooLarge(_) => "too_large",
             ApiError::Busy(_) | ApiError::PicturesBusy(_) => "busy",

@@ -43,7 +43,7 @@ pub fn name_of(input: &FigureInput, index: usize) -> String {
 /// One cell of the JSON form, checked against the lattice
 /// ([`LatticeKind::cell_from_coords`]) and the limits. A 2D cell may also be
 /// given with a third coordinate of 0.
-fn cell(raw: &[i64], lattice: LatticeKind, limits: &Limits) -> Result<Cell, String> {
+pub(crate) fn cell(raw: &[i64], lattice: LatticeKind, limits: &Limits) -> Result<Cell, String> {
     let c = lattice.cell_from_coords_padded(raw).ok_or_else(|| {
         format!(
             "{raw:?} is not a cell of the {lattice} lattice (a {lattice} cell is {})",
@@ -61,8 +61,19 @@ fn cell(raw: &[i64], lattice: LatticeKind, limits: &Limits) -> Result<Cell, Stri
     Ok(c)
 }
 
-/// Reads figure `index` of a request.
+/// Reads figure `index` of a request, moved to start at block `[0, 0, 0]`
+/// ([`normalized`]).
 pub fn read(
+    input: &FigureInput,
+    index: usize,
+    lattice: LatticeKind,
+    limits: &Limits,
+) -> Result<Figure, ApiError> {
+    read_as_given(input, index, lattice, limits).map(|f| normalized(&f))
+}
+
+/// Reads figure `index` of a request in the request's own coordinates.
+pub fn read_as_given(
     input: &FigureInput,
     index: usize,
     lattice: LatticeKind,
@@ -119,7 +130,7 @@ pub fn read(
     if figure.len() > limits.max_cells() {
         return Err(too_big(figure.len()));
     }
-    Ok(normalized(&figure))
+    Ok(figure)
 }
 
 /// The figure moved so that its bounding box starts at block `[0, 0, 0]`,
@@ -135,6 +146,18 @@ pub fn read_all(
     lattice: LatticeKind,
     limits: &Limits,
 ) -> Result<Vec<Figure>, ApiError> {
+    Ok(read_all_as_given(inputs, lattice, limits)?
+        .iter()
+        .map(normalized)
+        .collect())
+}
+
+/// [`read_all`] in the request's own coordinates.
+pub fn read_all_as_given(
+    inputs: &[FigureInput],
+    lattice: LatticeKind,
+    limits: &Limits,
+) -> Result<Vec<Figure>, ApiError> {
     if inputs.len() > limits.max_figures() {
         return Err(ApiError::TooLarge(format!(
             "{} figures; this server takes at most {}",
@@ -145,7 +168,7 @@ pub fn read_all(
     inputs
         .iter()
         .enumerate()
-        .map(|(i, f)| read(f, i, lattice, limits))
+        .map(|(i, f)| read_as_given(f, i, lattice, limits))
         .collect()
 }
 

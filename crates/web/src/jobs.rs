@@ -2,6 +2,9 @@
 //! search and the exact search side by side, its own time limit) on a
 //! blocking thread with its own stop flag; its progress is published as a
 //! [`Snapshot`] that the server-sent event stream and the status route read.
+//! Once the run returns, the assemblies of each solution are counted in
+//! every figure ([`crate::puzzle::count_assemblies`]: `counting` in the
+//! snapshot) before the result is published.
 
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
@@ -57,6 +60,9 @@ pub struct Snapshot {
     pub elapsed: f64,
     /// Whether Stop was asked by a client.
     pub stop_requested: bool,
+    /// Whether the run has ended and the assemblies of its solutions are
+    /// being counted (Stop cuts the counts short).
+    pub counting: bool,
     /// The fewest pieces found so far.
     pub best_pieces: Option<usize>,
     /// The best lower bound proved so far.
@@ -75,6 +81,8 @@ pub struct Snapshot {
 pub struct Job {
     id: u64,
     stop: AtomicBool,
+    /// Stops the assembly counts (a Stop while counting, or the shutdown).
+    halt: AtomicBool,
     started: Instant,
     tx: watch::Sender<Snapshot>,
 }
@@ -88,7 +96,12 @@ impl Job {
     /// Asks the solver to stop; it returns the best dissection found so far.
     pub fn stop(&self) {
         self.stop.store(true, Ordering::SeqCst);
-        self.tx.send_modify(|s| s.stop_requested = true);
+        self.tx.send_modify(|s| {
+            s.stop_requested = true;
+            if s.counting {
+                self.halt.store(true, Ordering::SeqCst);
+            }
+        });
     }
 
     /// The current snapshot, with `elapsed` brought up to date while running.
@@ -212,6 +225,7 @@ impl Jobs {
     pub fn stop_all(&self) {
         for job in self.lock().values() {
             job.stop();
+            job.halt.store(true, Ordering::SeqCst);
         }
     }
 
@@ -234,6 +248,7 @@ impl Jobs {
             best_mismatch: None,
             elapsed: 0.0,
             stop_requested: false,
+            counting: false,
             best_pieces: None,
             lower_bound: None,
             optimal: false,
@@ -244,6 +259,7 @@ impl Jobs {
         let job = Arc::new(Job {
             id,
             stop: AtomicBool::new(false),
+            halt: AtomicBool::new(false),
             started: Instant::now(),
             tx,
         });
@@ -279,11 +295,22 @@ fn spawn(job: Arc<Job>, request: Request, permit: OwnedSemaphorePermit) {
             &worker.stop,
             &*worker,
         );
-        (report, request)
+        let counts = match &report {
+            Ok(r) => {
+                worker.tx.send_modify(|s| s.counting = true);
+                if worker.stop.load(Ordering::SeqCst) {
+                    // Stopped just before the counts began: they stop too.
+                    worker.halt.store(true, Ordering::SeqCst);
+                }
+                crate::puzzle::count_assemblies(r, &request.figures, &worker.halt)
+            }
+            Err(_) => Vec::new(),
+        };
+        (report.map(|r| (r, counts)), request)
     });
     tokio::spawn(async move {
         let (state, result, error) = match handle.await {
-            Ok((Ok(report), request)) => match result_json(&request, &report) {
+            Ok((Ok((report, counts)), request)) => match result_json(&request, &report, &counts) {
                 Ok(v) => (State::Done, Some(v), None),
                 Err(e) => (State::Failed, None, Some(e)),
             },
@@ -301,6 +328,7 @@ fn spawn(job: Arc<Job>, request: Request, permit: OwnedSemaphorePermit) {
                 s.optimal = r["optimal"] == Value::Bool(true);
             }
             s.state = state;
+            s.counting = false;
             s.result = result;
             s.error = error;
             s.elapsed = elapsed;
@@ -316,17 +344,30 @@ fn spawn(job: Arc<Job>, request: Request, permit: OwnedSemaphorePermit) {
 ///  "lower_bound": 4, "lower_bound_reason": "...", "optimal": true,
 ///  "found_by": "search", "time_to_first": 0.01, "time_to_best": 0.3,
 ///  "history": [{"pieces": 5, "seconds": 0.01, "by": "greedy"}, ...],
-///  "solution": { dissection-solution/1 ... }}
+///  "solution": { dissection-solution/1 ... }, "solution_text": "...",
+///  "solutions": [{"position": 1, "scores": {..}, "rank": {..}, "assemblies": [..],
+///                 "unique": true, "solution": {..}, "solution_text": "..."}, ...],
+///  "ranking": {"by": "variance", "asked": 3, "found": 3, "constraints": {..}}}
 /// ```
 ///
-/// `solution` is present only when a dissection was found; the engine
-/// verified it (it holds only `Verified` dissections).
-pub fn result_json(request: &Request, report: &Report) -> Result<Value, String> {
+/// `solution` (the best, the first of `solutions`) is present only when a
+/// dissection was found; the engine verified every one (it holds only
+/// `Verified` dissections). `solutions` lists every solution of a run that
+/// collected them ([`dissect_engine::Report::solutions`]: several asked
+/// for, a ranking or constraints), else the one answer, each with its
+/// assembly count per figure (`counts`, see [`crate::puzzle::solutions_json`]);
+/// `ranking` is present for a run that collected them.
+pub fn result_json(
+    request: &Request,
+    report: &Report,
+    counts: &[Vec<dissect_engine::Count>],
+) -> Result<Value, String> {
     let seconds = (report.seconds * 1000.0).round() / 1000.0;
     let stopped = report.end.stopped();
     let mut extra = report.extra();
-    let Some(best) = &report.best else {
-        return Ok(json!({
+    let ranking = crate::puzzle::ranking_json(report);
+    if report.best.is_none() {
+        let mut v = json!({
             "found": false,
             "stopped": stopped,
             "last_pieces": report.last_pieces,
@@ -334,18 +375,29 @@ pub fn result_json(request: &Request, report: &Report) -> Result<Value, String> 
             "explorations": report.explorations,
             "lower_bound": report.lower_bound.value,
             "seconds": seconds,
-        }));
-    };
+        });
+        if let Some(r) = ranking {
+            v["ranking"] = r;
+        }
+        return Ok(v);
+    }
     let _ = request;
-    let file = best.dissection().to_file(extra.clone());
+    let solutions = crate::puzzle::solutions_json(report, counts)?;
+    // The best is the first solution: its file (with its scores, rank and
+    // constraints when the run collected solutions).
+    let text = report
+        .solution_json()
+        .ok_or("a found dissection has no file")?;
+    let file: Value = serde_json::from_str(&text).map_err(|e| e.to_string())?;
     extra.insert("found".into(), Value::Bool(true));
     extra.insert("stopped".into(), Value::Bool(stopped));
     extra.insert("best_mismatch".into(), json!(0));
     extra.insert("level".into(), json!(report.level));
-    extra.insert("solution_text".into(), json!(file.to_json()));
-    extra.insert(
-        "solution".into(),
-        serde_json::to_value(&file).map_err(|e| e.to_string())?,
-    );
+    extra.insert("solution_text".into(), json!(text));
+    extra.insert("solution".into(), file);
+    extra.insert("solutions".into(), Value::Array(solutions));
+    if let Some(r) = ranking {
+        extra.insert("ranking".into(), r);
+    }
     Ok(Value::Object(extra))
 }

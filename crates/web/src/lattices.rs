@@ -20,11 +20,14 @@ fn title(lattice: LatticeKind) -> &'static str {
 }
 
 /// One lattice's description: the tiling (`dissect_render::tiling::Tiling`
-/// as JSON), its title and its export formats.
+/// as JSON), its title, its export formats, and whether the checkerboard
+/// constraint is offered on it (the puzzle crate's test: block parity
+/// colours every two neighbouring cells differently).
 pub fn describe(lattice: LatticeKind) -> Value {
     let mut v = Tiling::of(lattice).to_json();
     v["title"] = json!(title(lattice));
     v["exports"] = json!(export::formats_for(lattice));
+    v["checkerboard"] = json!(dissect_puzzle::constraints::has_checkerboard(lattice));
     v
 }
 
@@ -53,6 +56,15 @@ mod tests {
             );
         }
         assert_eq!(by("tri3")["period"], json!([2, 2]));
+        for (l, checkerboard) in [
+            ("square", true),
+            ("cubic", true),
+            ("tri4", false),
+            ("tri3", true),
+            ("hex", false),
+        ] {
+            assert_eq!(by(l)["checkerboard"], checkerboard, "{l}");
+        }
         assert_eq!(
             by("hex")["tiles"][0]["polygon"].as_array().unwrap().len(),
             6

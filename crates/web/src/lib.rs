@@ -14,6 +14,7 @@ pub mod figures;
 pub mod jobs;
 pub mod limits;
 pub mod picture;
+pub mod puzzle;
 pub mod security;
 
 mod assets;

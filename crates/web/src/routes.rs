@@ -28,7 +28,7 @@ use axum::response::sse::{Event as SseEvent, KeepAlive, Sse};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use axum::{Json, Router};
-use dissect_engine::{RunConfig, RunOptions};
+use dissect_engine::{EngineError, OptionsError, Rank, RunConfig, RunOptions};
 use futures_util::Stream;
 use serde::de::DeserializeOwned;
 use serde::Deserialize;
@@ -39,7 +39,7 @@ use crate::figures::{self, FigureInput};
 use crate::jobs::{Job, Jobs, Request, State as JobState};
 use crate::limits::Limits;
 use crate::security::{self, Access};
-use crate::{assets, examples, export, lattices, picture};
+use crate::{assets, examples, export, lattices, picture, puzzle};
 
 /// The largest request body, in bytes.
 pub const MAX_BODY: usize = 8 * 1024 * 1024;
@@ -205,6 +205,27 @@ struct SolveRequest {
     explorations: Option<usize>,
     #[serde(default)]
     max_pieces: Option<usize>,
+    /// How many different solutions with the fewest pieces (`--solutions`).
+    #[serde(default)]
+    solutions: Option<usize>,
+    /// How they are ranked (`--rank`).
+    #[serde(default)]
+    rank: Option<String>,
+    /// Keep-whole regions (`--keep N:REGIONS.txt`).
+    #[serde(default)]
+    keep: Option<Vec<puzzle::KeepInput>>,
+    /// `--min-piece`.
+    #[serde(default)]
+    min_piece: Option<usize>,
+    /// `--max-piece`.
+    #[serde(default)]
+    max_piece: Option<usize>,
+    /// `--checkerboard`.
+    #[serde(default)]
+    checkerboard: Option<bool>,
+    /// `--symmetry-weight`.
+    #[serde(default)]
+    symmetry_weight: Option<f64>,
 }
 
 async fn start_solve(
@@ -219,7 +240,8 @@ async fn start_solve(
             req.figures.len()
         )));
     }
-    let figs = figures::read_all(&req.figures, lattice, &s.limits)?;
+    let as_given = figures::read_all_as_given(&req.figures, lattice, &s.limits)?;
+    let figs: Vec<_> = as_given.iter().map(figures::normalized).collect();
     figures::check_equal_areas(&req.figures, &figs)?;
     let max_t = s.limits.max_time_limit();
     let time_limit = req.time_limit.unwrap_or(max_t);
@@ -236,6 +258,32 @@ async fn start_solve(
             "explorations must be from 1 to 10000 on this server, got {explorations}"
         )));
     }
+    let solutions = req.solutions.unwrap_or(1);
+    if solutions > puzzle::MAX_SOLUTIONS {
+        return Err(ApiError::BadValue(format!(
+            "solutions must be from 1 to {} on this server, got {solutions}",
+            puzzle::MAX_SOLUTIONS
+        )));
+    }
+    let rank = match &req.rank {
+        None => Rank::default(),
+        Some(r) => r
+            .parse::<Rank>()
+            .map_err(|e| ApiError::BadValue(format!("rank: {e}")))?,
+    };
+    let constraints = puzzle::constraints(
+        &puzzle::ConstraintInput {
+            keep: req.keep.clone().unwrap_or_default(),
+            min_piece: req.min_piece,
+            max_piece: req.max_piece,
+            checkerboard: req.checkerboard.unwrap_or(false),
+            symmetry_weight: req.symmetry_weight,
+        },
+        lattice,
+        &as_given,
+        &figs,
+        &s.limits,
+    )?;
     // Every other rule on the settings is the engine's.
     let defaults = RunConfig::default();
     let options = RunOptions::new(RunConfig {
@@ -246,9 +294,21 @@ async fn start_solve(
         explorations,
         max_pieces: req.max_pieces,
         time_limit: Some(time_limit),
+        solutions,
+        rank,
+        constraints,
         ..defaults
     })
-    .map_err(|e| ApiError::BadValue(api_name(&e.to_string())))?;
+    .map_err(|e| match e {
+        OptionsError::Constraints(c) => puzzle::constraint_error(&c),
+        e => ApiError::BadValue(api_name(&e.to_string())),
+    })?;
+    // What the run would refuse at its start (constraints that do not fit
+    // these figures or cannot hold for them) is refused here, at once.
+    dissect_engine::check(&figs, &options).map_err(|e| match e {
+        EngineError::Constraints(c) => puzzle::constraint_error(&c),
+        e => ApiError::BadFigure(e.to_string()),
+    })?;
     let names = req
         .figures
         .iter()
