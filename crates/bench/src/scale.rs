@@ -12,6 +12,7 @@
 //! origin of its skew points) into `k²` small triangles. Hexagons do not
 //! tile an enlarged hexagon, so `hex` has no scaling series.
 
+use dissect_core::lattice::Point;
 use dissect_core::{Cell, Figure, LatticeKind};
 
 use crate::BenchError;
@@ -131,11 +132,11 @@ fn scale_tri3(cell: Cell, k: i32, out: &mut Vec<Cell>) -> Option<()> {
     let base = [v[0].checked_mul(k)?, v[1].checked_mul(k)?];
     let mut push = |vertex: [i32; 2], small_up: bool| -> Option<()> {
         let c = if small_up { [-1, 2] } else { [1, 1] };
-        let q = [
+        let q = Point::new(
             vertex[0].checked_mul(3)?.checked_add(c[0])?,
             vertex[1].checked_mul(3)?.checked_add(c[1])?,
             0,
-        ];
+        );
         out.push(l.from_point(q)?);
         Some(())
     };

@@ -53,17 +53,10 @@ pub fn piece_motion(lattice: &dyn Lattice, from: &[Cell], to: &[Cell]) -> Option
         moved.clear();
         moved.extend(source.iter().map(|p| sym.apply(*p)));
         moved.sort_unstable();
-        let shift = [
-            target[0][0] - moved[0][0],
-            target[0][1] - moved[0][1],
-            target[0][2] - moved[0][2],
-        ];
+        let shift = target[0] - moved[0];
         let m = lattice.modulus();
         let translation = (0..lattice.dim()).all(|d| shift[d] % m == 0);
-        let fits = translation
-            && moved.iter().zip(&target).all(|(m, t)| {
-                m[0] + shift[0] == t[0] && m[1] + shift[1] == t[1] && m[2] + shift[2] == t[2]
-            });
+        let fits = translation && moved.iter().zip(&target).all(|(m, t)| *m + shift == *t);
         if fits {
             return Some(Transform::new(sym, shift));
         }

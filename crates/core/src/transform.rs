@@ -17,7 +17,7 @@ impl Transform {
     /// The identity.
     pub const IDENTITY: Transform = Transform {
         sym: Symmetry::IDENTITY,
-        shift: [0, 0, 0],
+        shift: Point::ORIGIN,
     };
 
     /// `p ↦ sym · p + shift`.
@@ -38,21 +38,15 @@ impl Transform {
     /// Applies the transform.
     #[inline]
     pub fn apply(&self, p: Point) -> Point {
-        let q = self.sym.apply(p);
-        [
-            q[0] + self.shift[0],
-            q[1] + self.shift[1],
-            q[2] + self.shift[2],
-        ]
+        self.sym.apply(p) + self.shift
     }
 
     /// The inverse motion: `q ↦ sym⁻¹ · (q − shift)`.
     pub fn inverse(&self) -> Transform {
         let inv = self.sym.inverse();
-        let s = inv.apply(self.shift);
         Transform {
             sym: inv,
-            shift: [-s[0], -s[1], -s[2]],
+            shift: -inv.apply(self.shift),
         }
     }
 

@@ -287,7 +287,7 @@ fn mul(m: &[[i32; 3]; 3], p: Point) -> Point {
     for r in 0..3 {
         out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2];
     }
-    out
+    Point::from(out)
 }
 
 /// The point set sorted and translated by a multiple of `modulus` so that its
@@ -295,14 +295,8 @@ fn mul(m: &[[i32; 3]; 3], p: Point) -> Point {
 fn canonical(mut pts: Vec<Point>, modulus: i32) -> Vec<Point> {
     pts.sort();
     let first = pts[0];
-    let off: Vec<i32> = first
-        .iter()
-        .map(|c| modulus * c.div_euclid(modulus))
-        .collect();
-    let mut out: Vec<Point> = pts
-        .iter()
-        .map(|p| [p[0] - off[0], p[1] - off[1], p[2] - off[2]])
-        .collect();
+    let off = Point::from(first.coords().map(|c| modulus * c.div_euclid(modulus)));
+    let mut out: Vec<Point> = pts.iter().map(|p| *p - off).collect();
     out.sort();
     out
 }

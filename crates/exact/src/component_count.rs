@@ -21,10 +21,8 @@ pub(crate) fn all_congruent(inst: &Instance) -> bool {
         let mut v = pts.to_vec();
         v.sort();
         let r = inst.residue(v[0]);
-        let t = [v[0][0] - r[0], v[0][1] - r[1], v[0][2] - r[2]];
-        v.iter()
-            .map(|p| [p[0] - t[0], p[1] - t[1], p[2] - t[2]])
-            .collect()
+        let t = v[0] - r;
+        v.iter().map(|p| p - t).collect()
     };
     let base = &inst.shapes[0].points;
     let forms: Vec<Vec<Point>> = inst

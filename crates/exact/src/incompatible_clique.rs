@@ -61,7 +61,7 @@ impl Incompatibility {
                         return None;
                     }
                     for q in &target.points {
-                        let t = [q[0] - gp[0], q[1] - gp[1], q[2] - gp[2]];
+                        let t = q - gp;
                         if inst.is_translation(t) {
                             shifts.insert(t);
                         }
@@ -74,10 +74,7 @@ impl Incompatibility {
                         return None;
                     }
                     for (c, gp) in images.iter().enumerate() {
-                        inside[c] =
-                            target
-                                .index
-                                .contains_key(&[gp[0] + t[0], gp[1] + t[1], gp[2] + t[2]]);
+                        inside[c] = target.index.contains_key(&(gp + t));
                         seen[c] = false;
                     }
                     for start in 0..n {

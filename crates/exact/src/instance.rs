@@ -129,11 +129,11 @@ impl Instance {
 
     /// The residue of a point modulo the translations.
     pub fn residue(&self, p: Point) -> Point {
-        let mut r = p;
+        let mut r = p.coords();
         for v in r.iter_mut().take(self.dim) {
             *v = v.rem_euclid(self.modulus);
         }
-        r
+        Point::from(r)
     }
 
     /// Pieces given per shape (`pieces[k]` for shape `k`) back in input order.

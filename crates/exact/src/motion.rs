@@ -71,7 +71,7 @@ pub(crate) fn motions_into(
             }
             let gp = g.apply(*p);
             for q in &target.points {
-                let t = [q[0] - gp[0], q[1] - gp[1], q[2] - gp[2]];
+                let t = q - gp;
                 if inst.is_translation(t) {
                     *shifts.entry(t).or_default() += 1;
                 }
@@ -96,13 +96,8 @@ pub(crate) fn self_symmetries(inst: &Instance, shape: usize) -> Vec<usize> {
     for (gi, g) in inst.syms.iter().enumerate() {
         let img: Vec<Point> = s.points.iter().map(|p| g.apply(*p)).collect();
         let m = *img.iter().min().expect("non-empty");
-        let t = [min[0] - m[0], min[1] - m[1], min[2] - m[2]];
-        if inst.is_translation(t)
-            && img.iter().all(|p| {
-                s.index
-                    .contains_key(&[p[0] + t[0], p[1] + t[1], p[2] + t[2]])
-            })
-        {
+        let t = min - m;
+        if inst.is_translation(t) && img.iter().all(|p| s.index.contains_key(&(p + t))) {
             out.push(gi);
         }
     }

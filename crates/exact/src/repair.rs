@@ -459,11 +459,11 @@ fn best_motion(inst: &Instance, from: &[usize], f: usize, to: &[usize]) -> Optio
                 if v == 0 {
                     continue;
                 }
-                let t = [
+                let t = Point::new(
                     base[0] + (idx / (ext[1] * ext[2])) as i32,
                     base[1] + (idx / ext[2] % ext[1]) as i32,
                     base[2] + (idx % ext[2]) as i32,
-                ];
+                );
                 if inst.is_translation(t) {
                     offer(v, gi, t);
                 }
@@ -473,7 +473,7 @@ fn best_motion(inst: &Instance, from: &[usize], f: usize, to: &[usize]) -> Optio
             for p in &img {
                 for &b in to {
                     let q = pf[b];
-                    let t = [q[0] - p[0], q[1] - p[1], q[2] - p[2]];
+                    let t = q - p;
                     if inst.is_translation(t) {
                         *votes.entry(t).or_default() += 1;
                     }
@@ -765,7 +765,7 @@ impl<'c, 'a> Round<'c, 'a> {
                 let ga = g.apply(s0.points[a0]);
                 for &b in &holdsf {
                     let q = sf.points[b];
-                    let t = [q[0] - ga[0], q[1] - ga[1], q[2] - ga[2]];
+                    let t = q - ga;
                     if inst.is_translation(t) {
                         let key = home.map_or(0, |h| dist2(h, q));
                         ranked.push((key, ranked.len(), Transform::new(*g, t)));
@@ -778,7 +778,7 @@ impl<'c, 'a> Round<'c, 'a> {
             for g in &inst.syms {
                 for &a in &holds0 {
                     let ga = g.apply(s0.points[a]);
-                    let t = [q[0] - ga[0], q[1] - ga[1], q[2] - ga[2]];
+                    let t = q - ga;
                     if inst.is_translation(t) {
                         let key = home.map_or(0, |h| dist2(h, s0.points[a]));
                         ranked.push((key, ranked.len(), Transform::new(*g, t)));
@@ -809,7 +809,7 @@ impl<'c, 'a> Round<'c, 'a> {
                     let ga = g.apply(s0.points[a]);
                     for &b in &holdsf {
                         let q = sf.points[b];
-                        let t = [q[0] - ga[0], q[1] - ga[1], q[2] - ga[2]];
+                        let t = q - ga;
                         if inst.is_translation(t) {
                             *votes.entry((gi, t)).or_default() += 1;
                         }
@@ -821,7 +821,7 @@ impl<'c, 'a> Round<'c, 'a> {
                 .map(|((gi, t), v)| {
                     let key = home.map_or(0, |(p, h)| {
                         let gp = inst.syms[gi].apply(p);
-                        dist2([gp[0] + t[0], gp[1] + t[1], gp[2] + t[2]], h)
+                        dist2(gp + t, h)
                     });
                     (key, std::cmp::Reverse(v), gi, t)
                 })

@@ -149,18 +149,11 @@ impl Brute {
             for g in &self.syms {
                 let img: Vec<Point> = shapes[s].iter().map(|p| g.apply(*p)).collect();
                 for anchor in &img {
-                    let t = [
-                        first[0] - anchor[0],
-                        first[1] - anchor[1],
-                        first[2] - anchor[2],
-                    ];
+                    let t = first - anchor;
                     if !self.is_translation(t) {
                         continue;
                     }
-                    let moved: Vec<Point> = img
-                        .iter()
-                        .map(|p| [p[0] + t[0], p[1] + t[1], p[2] + t[2]])
-                        .collect();
+                    let moved: Vec<Point> = img.iter().map(|p| p + t).collect();
                     if moved.iter().all(|p| free.contains(p)) {
                         for p in &moved {
                             free.remove(p);

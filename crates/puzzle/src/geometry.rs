@@ -90,10 +90,9 @@ impl Motions {
         for k in 0..self.dim {
             t[k] = -min[k].div_euclid(self.modulus) * self.modulus;
         }
+        let t = Point::from(t);
         for p in &mut pts {
-            for k in 0..3 {
-                p[k] += t[k];
-            }
+            *p = *p + t;
         }
         pts
     }
@@ -140,14 +139,11 @@ impl Motions {
             let mut img: Vec<Point> = a.iter().map(|p| g.apply(*p)).collect();
             img.sort_unstable();
             let m = img[0];
-            let t = [bmin[0] - m[0], bmin[1] - m[1], bmin[2] - m[2]];
+            let t = bmin - m;
             if !self.is_translation(t) {
                 continue;
             }
-            let same = img
-                .iter()
-                .zip(&b)
-                .all(|(p, q)| [p[0] + t[0], p[1] + t[1], p[2] + t[2]] == *q);
+            let same = img.iter().zip(&b).all(|(p, q)| *p + t == *q);
             let motion = Transform::new(*g, t);
             if same && allowed(&motion) {
                 return Some(motion);
@@ -172,19 +168,17 @@ impl Motions {
             let img: Vec<Point> = pts.iter().map(|p| g.apply(*p)).collect();
             let a = g.apply(anchor_cell);
             for q in &region_pts {
-                let t = [q[0] - a[0], q[1] - a[1], q[2] - a[2]];
+                let t = *q - a;
                 if !self.is_translation(t) {
                     continue;
                 }
                 let mut cells = Vec::with_capacity(img.len());
-                let fits = img.iter().all(|p| {
-                    match l.from_point([p[0] + t[0], p[1] + t[1], p[2] + t[2]]) {
-                        Some(c) if region.contains(&c) => {
-                            cells.push(c);
-                            true
-                        }
-                        _ => false,
+                let fits = img.iter().all(|p| match l.from_point(*p + t) {
+                    Some(c) if region.contains(&c) => {
+                        cells.push(c);
+                        true
                     }
+                    _ => false,
                 });
                 if fits {
                     cells.sort_unstable();

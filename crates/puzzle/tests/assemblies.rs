@@ -103,16 +103,13 @@ fn brute_force(
             let img: Vec<Point> = pts.iter().map(|p| g.apply(*p)).collect();
             for q in &fig_pts {
                 for p in &img {
-                    let t = [q[0] - p[0], q[1] - p[1], q[2] - p[2]];
+                    let t = q - p;
                     if !is_t(t) {
                         continue;
                     }
                     let moved: Option<BTreeSet<Cell>> = img
                         .iter()
-                        .map(|p| {
-                            l.from_point([p[0] + t[0], p[1] + t[1], p[2] + t[2]])
-                                .filter(|c| inside.contains(c))
-                        })
+                        .map(|p| l.from_point(p + t).filter(|c| inside.contains(c)))
                         .collect();
                     if let Some(m) = moved {
                         out.insert(m);
@@ -138,12 +135,11 @@ fn brute_force(
                 && syms.iter().any(|g| {
                     let img: Vec<Point> = pi.iter().map(|p| g.apply(*p)).collect();
                     pts_j.iter().any(|q| {
-                        let t = [q[0] - img[0][0], q[1] - img[0][1], q[2] - img[0][2]];
+                        let t = q - img[0];
                         is_t(t)
-                            && img.iter().all(|p| {
-                                l.from_point([p[0] + t[0], p[1] + t[1], p[2] + t[2]])
-                                    .is_some_and(|c| target.contains(&c))
-                            })
+                            && img
+                                .iter()
+                                .all(|p| l.from_point(p + t).is_some_and(|c| target.contains(&c)))
                     })
                 });
             if congruent && shape[j] == usize::MAX {
@@ -195,12 +191,12 @@ fn brute_force(
         .filter_map(|g| {
             let img: Vec<Point> = fig_pts.iter().map(|p| g.apply(*p)).collect();
             let (mi, mf) = (img.iter().min()?, fig_pts.iter().min()?);
-            let t = [mf[0] - mi[0], mf[1] - mi[1], mf[2] - mi[2]];
+            let t = mf - mi;
             let map: Option<Vec<(Cell, Cell)>> = figure
                 .iter()
                 .zip(&img)
                 .map(|(c, p)| {
-                    let d = l.from_point([p[0] + t[0], p[1] + t[1], p[2] + t[2]])?;
+                    let d = l.from_point(p + t)?;
                     fig.contains(&d).then_some((*c, d))
                 })
                 .collect();

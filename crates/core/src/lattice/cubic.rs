@@ -21,10 +21,10 @@ impl Lattice for Cubic {
         true
     }
     fn to_point(&self, cell: Cell) -> Point {
-        cell
+        Point::from(cell)
     }
     fn from_point(&self, p: Point) -> Option<Cell> {
-        Some(p)
+        Some(p.coords())
     }
     fn neighbors(&self, [x, y, z]: Cell) -> Vec<Cell> {
         vec![

@@ -39,9 +39,10 @@ impl Lattice for Hex {
     }
     fn to_point(&self, [x, y, _]: Cell) -> Point {
         let [q, r] = axial(x, y);
-        [q, r, 0]
+        Point::new(q, r, 0)
     }
-    fn from_point(&self, [q, r, k]: Point) -> Option<Cell> {
+    fn from_point(&self, p: Point) -> Option<Cell> {
+        let [q, r, k] = p.coords();
         (k == 0).then(|| offset(q, r))
     }
     fn neighbors(&self, [x, y, _]: Cell) -> Vec<Cell> {
@@ -71,7 +72,7 @@ impl Lattice for Hex {
     /// `x = 0`.
     fn shift_to_origin(&self, cells: &[Cell]) -> Point {
         if cells.is_empty() {
-            return [0; 3];
+            return Point::ORIGIN;
         }
         let dr = -cells.iter().map(|c| c[1]).min().unwrap_or(0);
         let min_x = cells
@@ -82,6 +83,6 @@ impl Lattice for Hex {
             })
             .min()
             .unwrap_or(0);
-        [-min_x, dr, 0]
+        Point::new(-min_x, dr, 0)
     }
 }

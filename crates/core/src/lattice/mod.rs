@@ -35,8 +35,92 @@ pub const MAX_COORDINATE: i64 = 1 << 24;
 /// * `hex`: `[x, y, 0]`, odd rows shifted half a cell to the right
 pub type Cell = [i32; 3];
 
-/// A cell embedded as an integer point, on which symmetries act.
-pub type Point = [i32; 3];
+/// A cell embedded as an integer point, on which symmetries act; also a
+/// translation between points (a difference of two points). A distinct
+/// type from [`Cell`]: on `tri4`, `tri3` and `hex` a cell's point is not
+/// its coordinates ([`Lattice::to_point`], [`Lattice::from_point`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Point([i32; 3]);
+
+impl Point {
+    /// The origin, also the zero translation.
+    pub const ORIGIN: Point = Point([0, 0, 0]);
+
+    /// The point `(x, y, z)`.
+    pub const fn new(x: i32, y: i32, z: i32) -> Point {
+        Point([x, y, z])
+    }
+
+    /// The coordinates.
+    pub const fn coords(self) -> [i32; 3] {
+        self.0
+    }
+}
+
+impl From<[i32; 3]> for Point {
+    fn from(c: [i32; 3]) -> Point {
+        Point(c)
+    }
+}
+
+impl From<Point> for [i32; 3] {
+    fn from(p: Point) -> [i32; 3] {
+        p.0
+    }
+}
+
+impl std::ops::Index<usize> for Point {
+    type Output = i32;
+    #[inline]
+    fn index(&self, i: usize) -> &i32 {
+        &self.0[i]
+    }
+}
+
+/// `Point ± Point`, also on references (as the integers do).
+macro_rules! point_op {
+    ($trait:ident, $method:ident, $op:tt) => {
+        impl std::ops::$trait for Point {
+            type Output = Point;
+            #[inline]
+            fn $method(self, o: Point) -> Point {
+                Point([self.0[0] $op o.0[0], self.0[1] $op o.0[1], self.0[2] $op o.0[2]])
+            }
+        }
+        impl std::ops::$trait<&Point> for Point {
+            type Output = Point;
+            #[inline]
+            fn $method(self, o: &Point) -> Point {
+                std::ops::$trait::$method(self, *o)
+            }
+        }
+        impl std::ops::$trait<Point> for &Point {
+            type Output = Point;
+            #[inline]
+            fn $method(self, o: Point) -> Point {
+                std::ops::$trait::$method(*self, o)
+            }
+        }
+        impl std::ops::$trait<&Point> for &Point {
+            type Output = Point;
+            #[inline]
+            fn $method(self, o: &Point) -> Point {
+                std::ops::$trait::$method(*self, *o)
+            }
+        }
+    };
+}
+
+point_op!(Add, add, +);
+point_op!(Sub, sub, -);
+
+impl std::ops::Neg for Point {
+    type Output = Point;
+    #[inline]
+    fn neg(self) -> Point {
+        Point([-self.0[0], -self.0[1], -self.0[2]])
+    }
+}
 
 /// A point symmetry: an integer matrix of finite order and determinant ±1
 /// acting on points (a signed permutation matrix on `square`, `tri4` and
@@ -109,11 +193,11 @@ impl Symmetry {
     #[inline]
     pub fn apply(&self, p: Point) -> Point {
         let m = &self.m;
-        [
+        Point([
             m[0][0] * p[0] + m[0][1] * p[1] + m[0][2] * p[2],
             m[1][0] * p[0] + m[1][1] * p[1] + m[1][2] * p[2],
             m[2][0] * p[0] + m[2][1] * p[1] + m[2][2] * p[2],
-        ]
+        ])
     }
 
     /// `self · v` for a wide vector (sums of points).
@@ -361,10 +445,10 @@ pub trait Lattice: Send + Sync {
     /// their smallest block coordinates are as near 0 as the lattice allows
     /// and never negative (exactly 0 on `square`, `tri4`, `cubic` and `hex`;
     /// on `tri3`, where a translation must keep `x + y` even, `x` may start
-    /// at 1). `[0, 0, 0]` for no cells.
+    /// at 1). [`Point::ORIGIN`] for no cells.
     fn shift_to_origin(&self, cells: &[Cell]) -> Point {
         let Some(first) = cells.first() else {
-            return [0; 3];
+            return Point::ORIGIN;
         };
         let mut min = self.block(*first);
         for c in cells {
@@ -374,7 +458,7 @@ pub trait Lattice: Send + Sync {
             }
         }
         let m = self.modulus();
-        [-m * min[0], -m * min[1], -m * min[2]]
+        Point([-m * min[0], -m * min[1], -m * min[2]])
     }
 
     /// The number of ways ([`Lattice::coarse_cell`]'s `phase`) to lay the
@@ -421,7 +505,7 @@ pub fn translate_cells(l: &dyn Lattice, cells: &[Cell], shift: Point) -> Vec<Cel
         .iter()
         .map(|c| {
             let p = l.to_point(*c);
-            l.from_point([p[0] + shift[0], p[1] + shift[1], p[2] + shift[2]])
+            l.from_point(p + shift)
                 .expect("a lattice translation maps cells to cells")
         })
         .collect()

@@ -20,10 +20,10 @@ impl Lattice for Square {
         cell[2] == 0
     }
     fn to_point(&self, cell: Cell) -> Point {
-        cell
+        Point::from(cell)
     }
     fn from_point(&self, p: Point) -> Option<Cell> {
-        (p[2] == 0).then_some(p)
+        (p[2] == 0).then_some(p.coords())
     }
     fn neighbors(&self, [x, y, _]: Cell) -> Vec<Cell> {
         vec![[x + 1, y, 0], [x - 1, y, 0], [x, y + 1, 0], [x, y - 1, 0]]

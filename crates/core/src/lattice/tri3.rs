@@ -36,12 +36,13 @@ impl Lattice for Tri3 {
     }
     fn to_point(&self, [x, y, _]: Cell) -> Point {
         if points_up(x, y) {
-            [3 * (x - y) / 2 - 1, 3 * y + 2, 0]
+            Point::new(3 * (x - y) / 2 - 1, 3 * y + 2, 0)
         } else {
-            [3 * (x - y - 1) / 2 + 1, 3 * y + 1, 0]
+            Point::new(3 * (x - y - 1) / 2 + 1, 3 * y + 1, 0)
         }
     }
-    fn from_point(&self, [i, j, k]: Point) -> Option<Cell> {
+    fn from_point(&self, p: Point) -> Option<Cell> {
+        let [i, j, k] = p.coords();
         if k != 0 {
             return None;
         }
@@ -83,7 +84,7 @@ impl Lattice for Tri3 {
     /// to `x = 1` when `x + y` must stay even.
     fn shift_to_origin(&self, cells: &[Cell]) -> Point {
         let Some(&first) = cells.first() else {
-            return [0; 3];
+            return Point::ORIGIN;
         };
         let min_x = cells.iter().map(|c| c[0]).min().unwrap_or(0);
         let min_y = cells.iter().map(|c| c[1]).min().unwrap_or(0);
@@ -94,6 +95,6 @@ impl Lattice for Tri3 {
         }
         let from = self.to_point(first);
         let to = self.to_point([first[0] + dx, first[1] + dy, 0]);
-        [to[0] - from[0], to[1] - from[1], 0]
+        Point::new(to[0] - from[0], to[1] - from[1], 0)
     }
 }

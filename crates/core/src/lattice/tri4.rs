@@ -30,7 +30,7 @@ impl Lattice for Tri4 {
     }
     fn to_point(&self, [x, y, t]: Cell) -> Point {
         let r = RESIDUE[t as usize];
-        [6 * x + r[0], 6 * y + r[1], 0]
+        Point::new(6 * x + r[0], 6 * y + r[1], 0)
     }
     fn from_point(&self, p: Point) -> Option<Cell> {
         if p[2] != 0 {

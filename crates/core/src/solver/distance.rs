@@ -4,6 +4,7 @@
 //! when the offset is not a lattice translation) and count the cells of `a`
 //! that miss `b` plus those of `b` that miss `a`.
 
+use crate::lattice::Point;
 use crate::lattice::Symmetry;
 use crate::solver::piece::Pieces;
 use crate::solver::shape::Layout;
@@ -79,11 +80,11 @@ pub(crate) fn distance(
         for ix in 0..n_choices[0] {
             for iy in 0..n_choices[1] {
                 for iz in 0..n_choices[2] {
-                    let shift = [
+                    let shift = Point::new(
                         choices[0][ix] as i32,
                         choices[1][iy] as i32,
                         choices[2][iz] as i32,
-                    ];
+                    );
                     // Count hits in chunks, giving up once even all the
                     // remaining cells could not beat the best overlap.
                     let base = to.layout.linear(shift) - to.origin;

@@ -48,7 +48,7 @@ pub(crate) fn greedy(problem: &Problem, style: GreedyStyle) -> Candidate {
             common.retain(|&c| {
                 let p = sym.apply(shapes[pivot].point(c));
                 shapes[f]
-                    .lookup(add(p, t))
+                    .lookup(p + t)
                     .is_some_and(|j| labels[f][j as usize] == FREE)
             });
             motions[f] = Some((s, t));
@@ -63,9 +63,7 @@ pub(crate) fn greedy(problem: &Problem, style: GreedyStyle) -> Candidate {
                 for (f, m) in motions.iter().enumerate() {
                     if let Some((s, t)) = m {
                         let p = problem.geo.syms[*s].apply(shapes[pivot].point(c));
-                        let j = shapes[f]
-                            .lookup(add(p, *t))
-                            .expect("kept cells land inside");
+                        let j = shapes[f].lookup(p + *t).expect("kept cells land inside");
                         labels[f][j as usize] = k;
                     }
                 }
@@ -78,10 +76,6 @@ pub(crate) fn greedy(problem: &Problem, style: GreedyStyle) -> Candidate {
         labels,
         k: k as usize,
     }
-}
-
-fn add(p: Point, t: Point) -> Point {
-    [p[0] + t[0], p[1] + t[1], p[2] + t[2]]
 }
 
 /// Cell pairs that vote for translations in one symmetry, at most.
@@ -161,7 +155,7 @@ fn best_motion(
             }
         }
     }
-    (best.1, best.2)
+    (best.1, Point::from(best.2))
 }
 
 fn bounds(points: &[Point]) -> (Point, Point) {
@@ -173,7 +167,7 @@ fn bounds(points: &[Point]) -> (Point, Point) {
             hi[d] = hi[d].max(p[d]);
         }
     }
-    (lo, hi)
+    (Point::from(lo), Point::from(hi))
 }
 
 /// The connected components of `cells` in `shape`, each sorted, in order of

@@ -30,7 +30,11 @@ impl Grid {
             let idx = ((p[2] - lo[2]) * size[1] + (p[1] - lo[1])) * size[0] + (p[0] - lo[0]);
             slots[idx as usize] = i as u32;
         }
-        Grid { lo, size, slots }
+        Grid {
+            lo: Point::from(lo),
+            size,
+            slots,
+        }
     }
 
     /// The slot of point `p` in the box, if inside.
@@ -158,7 +162,7 @@ impl Shape {
                 hi[d] = hi[d].max(p[d]);
             }
         }
-        (lo, hi)
+        (Point::from(lo), Point::from(hi))
     }
 }
 

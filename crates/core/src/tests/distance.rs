@@ -89,7 +89,7 @@ fn reference_distance(geo: &Geometry, a: &[Point], b: &[Point]) -> u32 {
                 for &z in &options[2] {
                     let hits = ga
                         .iter()
-                        .filter(|p| target.contains(&[p[0] + x, p[1] + y, p[2] + z]))
+                        .filter(|p| target.contains(&(*p + Point::new(x, y, z))))
                         .count();
                     best = best.max(hits);
                 }

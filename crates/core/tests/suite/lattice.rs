@@ -157,11 +157,11 @@ fn for_every_lattice(test: impl Fn(LatticeKind, &dyn Lattice, &Expect)) {
 
 fn translate(l: &dyn Lattice, p: Point, steps: [i32; 3]) -> Point {
     let m = l.modulus();
-    let mut q = p;
+    let mut q = p.coords();
     for d in 0..l.dim() {
         q[d] += m * steps[d];
     }
-    q
+    Point::from(q)
 }
 
 #[test]
@@ -343,7 +343,7 @@ fn points_and_cells_are_inverse() {
         for x in -r..=r {
             for y in -r..=r {
                 for z in -2..=2 {
-                    let p = [x, y, z];
+                    let p = Point::new(x, y, z);
                     if let Some(c) = l.from_point(p) {
                         assert!(l.is_cell(c), "{p:?} -> {c:?}");
                         assert_eq!(l.to_point(c), p);
@@ -454,11 +454,11 @@ fn tri3_translations_keep_triangles_pointing_the_same_way() {
         for t in [[1, 0, 0], [0, 1, 0], [2, 1, 0], [1, 2, 0]] {
             // Only multiples of the modulus are translations.
             assert_eq!(
-                l.from_point([p[0] + t[0], p[1] + t[1], 0]),
+                l.from_point(p + Point::new(t[0], t[1], 0)),
                 None,
                 "{c:?} + {t:?}"
             );
-            let moved = l.from_point([p[0] + 3 * t[0], p[1] + 3 * t[1], 0]).unwrap();
+            let moved = l.from_point(p + Point::new(3 * t[0], 3 * t[1], 0)).unwrap();
             assert_eq!(up(moved), up(c));
         }
         for (k, g) in l.symmetries(false).iter().enumerate() {
@@ -496,7 +496,7 @@ fn symmetry_groups() {
             if e.dim == 2 {
                 // Planar symmetries leave the third coordinate alone.
                 for s in &syms {
-                    assert_eq!(s.apply([0, 0, 1]), [0, 0, 1]);
+                    assert_eq!(s.apply(Point::new(0, 0, 1)), Point::new(0, 0, 1));
                 }
             }
         }
@@ -510,15 +510,18 @@ fn symmetry_groups() {
 fn symmetry_algebra() {
     let rot90 = Symmetry::new([[0, -1, 0], [1, 0, 0], [0, 0, 1]]).unwrap();
     let flip = Symmetry::new([[-1, 0, 0], [0, 1, 0], [0, 0, 1]]).unwrap();
-    assert_eq!(rot90.apply([1, 0, 0]), [0, 1, 0]);
-    assert_eq!(rot90.compose(&rot90).apply([1, 2, 3]), [-1, -2, 3]);
+    assert_eq!(rot90.apply(Point::new(1, 0, 0)), Point::new(0, 1, 0));
+    assert_eq!(
+        rot90.compose(&rot90).apply(Point::new(1, 2, 3)),
+        Point::new(-1, -2, 3)
+    );
     assert_eq!(rot90.determinant(), 1);
     assert_eq!(flip.determinant(), -1);
     assert_eq!(rot90.compose(&flip).determinant(), -1);
     assert_eq!(flip.compose(&flip), Symmetry::IDENTITY);
     assert_eq!(rot90.inverse(), rot90.compose(&rot90).compose(&rot90));
     // compose applies the right-hand side first.
-    let p = [2, 5, 7];
+    let p = Point::new(2, 5, 7);
     assert_eq!(rot90.compose(&flip).apply(p), rot90.apply(flip.apply(p)));
     assert_ne!(rot90.compose(&flip), flip.compose(&rot90));
     assert_eq!(rot90.apply_wide([1, 2, 3]), [-2, 1, 3]);

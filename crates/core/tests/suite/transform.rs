@@ -18,7 +18,7 @@ fn motions(lattice: LatticeKind) -> Vec<Transform> {
             for d in 0..l.dim() {
                 p[d] = m * s[d];
             }
-            p
+            Point::from(p)
         })
         .collect();
     let mut out = Vec::new();
@@ -70,14 +70,17 @@ fn compose_and_inverse_laws() {
 fn apply_is_symmetry_then_shift() {
     let l = LatticeKind::Square.lattice();
     let rot = l.symmetries(false)[1];
-    let t = Transform::new(rot, [5, -1, 0]);
+    let t = Transform::new(rot, Point::new(5, -1, 0));
     assert_eq!(t.symmetry(), rot);
-    assert_eq!(t.shift(), [5, -1, 0]);
-    let p = [2, 3, 0];
+    assert_eq!(t.shift(), Point::new(5, -1, 0));
+    let p = Point::new(2, 3, 0);
     let r = rot.apply(p);
-    assert_eq!(t.apply(p), [r[0] + 5, r[1] - 1, 0]);
+    assert_eq!(t.apply(p), Point::new(r[0] + 5, r[1] - 1, 0));
     assert_eq!(Transform::IDENTITY.apply(p), p);
     // The inverse undoes the shift first, then the symmetry.
     assert_eq!(t.inverse().apply(t.apply(p)), p);
-    assert_eq!(t.inverse().shift(), rot.inverse().apply([-5, 1, 0]));
+    assert_eq!(
+        t.inverse().shift(),
+        rot.inverse().apply(Point::new(-5, 1, 0))
+    );
 }
