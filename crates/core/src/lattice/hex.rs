@@ -55,18 +55,6 @@ impl Lattice for Hex {
     fn symmetries(&self, mirror: bool) -> Vec<Symmetry> {
         hexagonal_symmetries(mirror)
     }
-    fn cells_in_box(&self, lo: [i32; 3], hi: [i32; 3]) -> Vec<Cell> {
-        let mut out = Vec::new();
-        for y in lo[1]..=hi[1] {
-            for x in lo[0]..=hi[0] {
-                out.push([x, y, 0]);
-            }
-        }
-        out
-    }
-    fn block(&self, cell: Cell) -> [i32; 3] {
-        [cell[0], cell[1], 0]
-    }
     /// Moves the top row to `y = 0` (which shifts the rows' `x` by their
     /// parity when `y` moves by an odd number), then the leftmost hexagon to
     /// `x = 0`.

@@ -33,6 +33,12 @@ pub const MAX_COORDINATE: i64 = 1 << 24;
 /// * `cubic`: `[x, y, z]`
 /// * `tri3`: `[x, y, 0]`, pointing up when `x + y` is even
 /// * `hex`: `[x, y, 0]`, odd rows shifted half a cell to the right
+///
+/// A plain array, unlike [`Point`]: a cell is what files, the studio and
+/// Python write (through [`LatticeKind::cell_from_coords`] and
+/// [`LatticeKind::cell_coords`]), and nothing computes with it but the
+/// lattice that owns it; the geometry works on points, whose type a cell
+/// does not convert to except through [`Lattice::to_point`].
 pub type Cell = [i32; 3];
 
 /// A cell embedded as an integer point, on which symmetries act; also a
@@ -435,11 +441,18 @@ pub trait Lattice: Send + Sync {
     fn symmetries(&self, mirror: bool) -> Vec<Symmetry>;
 
     /// Every cell whose block `[x, y, z]` lies in the box `lo..=hi`
-    /// (for 2D lattices the third coordinate of the box is ignored).
-    fn cells_in_box(&self, lo: [i32; 3], hi: [i32; 3]) -> Vec<Cell>;
+    /// (for 2D lattices the third coordinate of the box is ignored). The
+    /// default is a 2D lattice with one cell `[x, y, 0]` per block
+    /// (`square`, `tri3`, `hex`); `tri4` and `cubic` have their own.
+    fn cells_in_box(&self, lo: [i32; 3], hi: [i32; 3]) -> Vec<Cell> {
+        plane_blocks(lo, hi)
+    }
 
-    /// The block (`[x, y, 0]` in 2D) a cell lies in.
-    fn block(&self, cell: Cell) -> [i32; 3];
+    /// The block (`[x, y, 0]` in 2D) a cell lies in. The default is a 2D
+    /// lattice's (`square`, `tri4`, `tri3`, `hex`); `cubic` has its own.
+    fn block(&self, cell: Cell) -> [i32; 3] {
+        [cell[0], cell[1], 0]
+    }
 
     /// A lattice translation, as a point offset, that moves `cells` so that
     /// their smallest block coordinates are as near 0 as the lattice allows
@@ -494,6 +507,19 @@ pub(crate) fn grid_coarse_cell(cell: Cell, factor: i32, phase: usize, dims: usiz
         out[d] = (cell[d] + shift).div_euclid(factor);
     }
     Some(out)
+}
+
+/// The blocks `[x, y, 0]` of the plane box `lo..=hi` (row by row; the third
+/// coordinate of the box is ignored): the cells of `square`, `tri3` and
+/// `hex` in a box, and the squares `tri4` splits.
+pub(crate) fn plane_blocks(lo: [i32; 3], hi: [i32; 3]) -> Vec<Cell> {
+    let mut out = Vec::new();
+    for y in lo[1]..=hi[1] {
+        for x in lo[0]..=hi[0] {
+            out.push([x, y, 0]);
+        }
+    }
+    out
 }
 
 /// The cells moved by the point offset `shift` (a lattice translation).

@@ -34,18 +34,6 @@ impl Lattice for Square {
     fn symmetries(&self, mirror: bool) -> Vec<Symmetry> {
         planar_symmetries(mirror)
     }
-    fn cells_in_box(&self, lo: [i32; 3], hi: [i32; 3]) -> Vec<Cell> {
-        let mut out = Vec::new();
-        for y in lo[1]..=hi[1] {
-            for x in lo[0]..=hi[0] {
-                out.push([x, y, 0]);
-            }
-        }
-        out
-    }
-    fn block(&self, cell: Cell) -> [i32; 3] {
-        [cell[0], cell[1], 0]
-    }
     fn coarse_phases(&self, factor: i32) -> usize {
         (factor.max(0) as usize).pow(2)
     }

@@ -68,18 +68,6 @@ impl Lattice for Tri3 {
     fn symmetries(&self, mirror: bool) -> Vec<Symmetry> {
         hexagonal_symmetries(mirror)
     }
-    fn cells_in_box(&self, lo: [i32; 3], hi: [i32; 3]) -> Vec<Cell> {
-        let mut out = Vec::new();
-        for y in lo[1]..=hi[1] {
-            for x in lo[0]..=hi[0] {
-                out.push([x, y, 0]);
-            }
-        }
-        out
-    }
-    fn block(&self, cell: Cell) -> [i32; 3] {
-        [cell[0], cell[1], 0]
-    }
     /// Moves the top row to `y = 0` and the leftmost triangle to `x = 0`, or
     /// to `x = 1` when `x + y` must stay even.
     fn shift_to_origin(&self, cells: &[Cell]) -> Point {

@@ -56,17 +56,9 @@ impl Lattice for Tri4 {
         planar_symmetries(mirror)
     }
     fn cells_in_box(&self, lo: [i32; 3], hi: [i32; 3]) -> Vec<Cell> {
-        let mut out = Vec::new();
-        for y in lo[1]..=hi[1] {
-            for x in lo[0]..=hi[0] {
-                for t in 0..4 {
-                    out.push([x, y, t]);
-                }
-            }
-        }
-        out
-    }
-    fn block(&self, cell: Cell) -> [i32; 3] {
-        [cell[0], cell[1], 0]
+        super::plane_blocks(lo, hi)
+            .into_iter()
+            .flat_map(|[x, y, _]| (0..4).map(move |t| [x, y, t]))
+            .collect()
     }
 }
