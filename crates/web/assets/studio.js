@@ -162,7 +162,19 @@ const state = {
 };
 
 function newFigure(name, w = 8, h = 8, d = 1) {
-  return { name, w, h, d, layer: 0, cells: new Set() };
+  // keep: cell key -> letter a-z (the keep-whole regions painted on it).
+  return { name, w, h, d, layer: 0, cells: new Set(), keep: new Map() };
+}
+
+/** A figure's cells and regions, for undo. */
+function snap(fig) {
+  return { cells: new Set(fig.cells), keep: new Map(fig.keep) };
+}
+
+const LETTERS = 'abcdefghijklmnopqrstuvwxyz';
+/** The colour of keep region `letter`: the shared palette, one colour a letter. */
+function letterColour(letter) {
+  return pieceColour(LETTERS.indexOf(letter));
 }
 
 function figureName(i) {
@@ -213,6 +225,24 @@ function drawEditor(fig, card, preview = null) {
     const c = unkey(k);
     if (layers && c[2] !== fig.layer) continue;
     if (inGrid(c)) poly(cellPolygon(L, c), '#2b2d42');
+  }
+  // Keep-whole regions: the region's colour inset in its cells, its letter
+  // on top when the cells are large enough to read it.
+  for (const [k, letter] of fig.keep) {
+    if (!fig.cells.has(k)) continue;
+    const c = unkey(k);
+    if ((layers && c[2] !== fig.layer) || !inGrid(c)) continue;
+    const pts = cellPolygon(L, c);
+    const cx = pts.reduce((a, p) => a + p[0], 0) / pts.length, cy = pts.reduce((a, p) => a + p[1], 0) / pts.length;
+    const inset = pts.map(([px, py]) => [cx + (px - cx) * 0.8, cy + (py - cy) * 0.8]);
+    poly(inset, letterColour(letter));
+    if (cs >= 16) {
+      g.fillStyle = '#1d1d1f';
+      g.font = `600 ${Math.round(cs * 0.45)}px system-ui, sans-serif`;
+      g.textAlign = 'center';
+      g.textBaseline = 'middle';
+      g.fillText(letter, (cx - lo[0]) * cs, (cy - lo[1]) * cs);
+    }
   }
   if (preview) {
     const fill = preview.fill ? 'rgba(37,99,235,.35)' : 'rgba(185,28,28,.3)';
@@ -277,6 +307,54 @@ function updateAreas() {
     el.textContent = `✗ Areas differ by ${diff} cell${diff === 1 ? '' : 's'} (${list}): ${diffs}`;
   }
   $('#solve').disabled = !(equal && counts[0] > 0 && state.figures.length >= 2) || !!state.job;
+  updateKeepSummary();
+}
+
+/** What the closed Puzzle section holds, in a few words (so that nothing set there is hidden). */
+function updatePuzzleSet() {
+  const set = [];
+  const n = Number($('#opt-solutions').value);
+  if (n > 1) set.push(`${n} solutions`);
+  if ($('#opt-rank').value !== 'variance') set.push(`by ${$('#opt-rank').selectedOptions[0].textContent}`);
+  if ($('#opt-min-piece').value.trim()) set.push(`min ${$('#opt-min-piece').value}`);
+  if ($('#opt-max-piece').value.trim()) set.push(`max ${$('#opt-max-piece').value}`);
+  if (Number($('#opt-symmetry').value)) set.push(`symmetry ${$('#opt-symmetry').value}`);
+  if ($('#opt-checkerboard').checked) set.push('checkerboard');
+  if (keepJson().length) set.push('keep regions');
+  $('#puzzle-set').textContent = set.length ? `(${set.join(', ')})` : '';
+}
+
+/** The keep-whole regions of figure `fig` by letter (cells as the API takes them), painted on its cells. */
+function keepRegions(fig) {
+  const regions = {};
+  for (const [k, letter] of [...fig.keep].sort((a, b) => (a[1] < b[1] ? -1 : a[1] > b[1] ? 1 : 0))) {
+    const [x, y, t] = unkey(k);
+    if (!fig.cells.has(k) || x >= fig.w || y >= fig.h) continue;
+    (regions[letter] ??= []).push(cellJson(state.lattice, [x, y, t]));
+  }
+  return regions;
+}
+
+/** The `keep` option of a solve: every figure's painted regions. */
+function keepJson() {
+  return state.figures
+    .map((f, i) => ({ figure: i + 1, regions: keepRegions(f) }))
+    .filter((k) => Object.keys(k.regions).length > 0);
+}
+
+function updateKeepSummary() {
+  const el = $('#keep-summary');
+  if (!el) return;
+  const keep = keepJson();
+  state.figures.forEach((f, i) => {
+    const b = cards()[i] && $('.clear-keep', cards()[i]);
+    if (b) b.hidden = !keep.some((k) => k.figure === i + 1);
+  });
+  updatePuzzleSet();
+  el.textContent = keep.length
+    ? 'Kept whole: ' + keep.map((k) => `${state.figures[k.figure - 1].name}: ` +
+        Object.entries(k.regions).map(([l, c]) => `${l} (${c.length})`).join(', ')).join(' · ')
+    : 'Keep whole: paint regions with the ◼ Keep tool.';
 }
 
 function cards() {
@@ -321,7 +399,7 @@ function makeCard(fig, i) {
     input.onchange = () => {
       const v = Math.max(1, Math.min(dim === 'd' ? 64 : 128, Math.round(Number(input.value) || 1)));
       input.value = v;
-      const before = new Set(fig.cells);
+      const before = snap(fig);
       fig[dim] = v;
       for (const k of [...fig.cells]) {
         const [x, y, t] = unkey(k);
@@ -341,8 +419,16 @@ function makeCard(fig, i) {
     renderFigures();
   };
   $('.clear', card).onclick = () => {
-    const before = new Set(fig.cells);
+    const before = snap(fig);
     fig.cells.clear();
+    fig.keep.clear();
+    record(i, before);
+    drawEditor(fig, card);
+    updateAreas();
+  };
+  $('.clear-keep', card).onclick = () => {
+    const before = snap(fig);
+    fig.keep.clear();
     record(i, before);
     drawEditor(fig, card);
     updateAreas();
@@ -378,6 +464,11 @@ function attachPointer(fig, card, i) {
     const k = key(...c);
     if (on) fig.cells.add(k); else fig.cells.delete(k);
   };
+  const paint = (c, letter) => {
+    const k = key(...c);
+    if (!inside(c) || !fig.cells.has(k)) return;
+    if (letter) fig.keep.set(k, letter); else fig.keep.delete(k);
+  };
   canvas.addEventListener('contextmenu', (ev) => ev.preventDefault());
   canvas.addEventListener('pointerdown', (ev) => {
     ev.preventDefault();
@@ -385,9 +476,19 @@ function attachPointer(fig, card, i) {
     const [fx, fy] = at(ev);
     const c = cellAt(state.lattice, fx, fy, fig.layer);
     if (!inside(c)) return;
-    const before = new Set(fig.cells);
+    const before = snap(fig);
     const filled = fig.cells.has(key(...c));
-    const tool = ev.button === 2 ? 'erase' : state.tool;
+    const tool = ev.button === 2 && state.tool !== 'keep' ? 'erase' : state.tool;
+    if (tool === 'keep') {
+      // Paint the current letter on filled cells; starting on a cell of
+      // that letter, or with the right button, unpaints.
+      const letter = state.keepLetter;
+      stroke = { tool, before, value: ev.button === 2 || fig.keep.get(key(...c)) === letter ? null : letter };
+      paint(c, stroke.value);
+      drawEditor(fig, card);
+      updateAreas();
+      return;
+    }
     if (tool === 'fill') {
       floodFill(fig, c, !filled);
       record(i, before);
@@ -415,7 +516,7 @@ function attachPointer(fig, card, i) {
       drawEditor(fig, card, rectOf(stroke));
       return;
     }
-    set(c, stroke.value);
+    if (stroke.tool === 'keep') paint(c, stroke.value); else set(c, stroke.value);
     drawEditor(fig, card);
     updateAreas();
   });
@@ -465,8 +566,10 @@ function floodFill(fig, start, value) {
 
 // Undo/redo: one entry per stroke, the figure's cells before and after.
 function record(i, before) {
-  const after = new Set(state.figures[i].cells);
-  if (before.size === after.size && [...before].every((k) => after.has(k))) return;
+  const after = snap(state.figures[i]);
+  const sameCells = before.cells.size === after.cells.size && [...before.cells].every((k) => after.cells.has(k));
+  const sameKeep = before.keep.size === after.keep.size && [...before.keep].every(([k, l]) => after.keep.get(k) === l);
+  if (sameCells && sameKeep) return;
   state.undo.push({ i, before, after });
   if (state.undo.length > 200) state.undo.shift();
   state.redo = [];
@@ -478,7 +581,8 @@ function applyHistory(from, to, field) {
   if (!entry) return;
   const fig = state.figures[entry.i];
   if (!fig) return;
-  fig.cells = new Set(entry[field]);
+  fig.cells = new Set(entry[field].cells);
+  fig.keep = new Map(entry[field].keep);
   to.push(entry);
   redrawCard(entry.i);
   updateAreas();
@@ -539,9 +643,9 @@ function figureFromCells(name, cells) {
 async function loadFigureText(i, name, text) {
   try {
     const data = await api('POST', '/api/figures', { lattice: state.lattice, figures: [{ name, text }] });
-    const before = new Set(state.figures[i].cells);
+    const before = snap(state.figures[i]);
     state.figures[i] = figureFromCells(name, data.figures[0].cells);
-    state.undo.push({ i, before, after: new Set(state.figures[i].cells) });
+    state.undo.push({ i, before, after: snap(state.figures[i]) });
     showMessage('');
     renderFigures();
   } catch (e) {
@@ -577,7 +681,7 @@ async function loadPicture(i, file, want) {
     const data = await res.json().catch(() => ({ error: { message: `HTTP ${res.status}` } }));
     if (!res.ok) throw new Error(data.error?.message || `HTTP ${res.status}`);
     const fig = state.figures[i];
-    const before = new Set(fig.cells);
+    const before = snap(fig);
     if (geo().layers) {
       // The picture becomes the current layer.
       for (const k of [...fig.cells]) if (unkey(k)[2] === fig.layer) fig.cells.delete(k);
@@ -632,7 +736,19 @@ async function startSolve() {
     mirror: $('#opt-mirror').checked,
     area_weight: Number($('#opt-area').value),
     time_limit: Number($('#opt-time').value),
+    solutions: Math.max(1, Math.round(Number($('#opt-solutions').value) || 1)),
+    rank: $('#opt-rank').value,
   };
+  // The designer's constraints: only what is set is sent.
+  const size = (sel) => ($(sel).value.trim() === '' ? null : Math.round(Number($(sel).value)));
+  const minPiece = size('#opt-min-piece'), maxPiece = size('#opt-max-piece');
+  if (minPiece !== null) body.min_piece = minPiece;
+  if (maxPiece !== null) body.max_piece = maxPiece;
+  if ($('#opt-checkerboard').checked && !$('#opt-checkerboard').disabled) body.checkerboard = true;
+  const weight = Number($('#opt-symmetry').value);
+  if (weight) body.symmetry_weight = weight;
+  const keep = keepJson();
+  if (keep.length) body.keep = keep;
   try {
     const started = await api('POST', '/api/solve', body);
     state.job = { id: started.id, figures: body.figures, lattice: body.lattice };
@@ -659,7 +775,9 @@ function fmt(v, digits = 1) {
 }
 
 function showProgress(s) {
-  $('#p-state').textContent = s.state === 'running' ? (s.stop_requested ? 'stopping…' : 'running') : s.state;
+  $('#p-state').textContent = s.state === 'running'
+    ? (s.counting ? 'counting assemblies…' : s.stop_requested ? 'stopping…' : 'running')
+    : s.state;
   $('#p-level').textContent = `${s.level} (${s.pieces} pieces)`;
   $('#p-done').textContent = s.total ? `${s.done} / ${s.total} (all: ${s.explorations})` : `${s.explorations}`;
   $('#p-score').textContent = fmt(s.best_score, 2);
@@ -688,11 +806,112 @@ function finish(s) {
   if (s.state === 'failed') { showMessage(s.error || 'the solve failed'); return; }
   const r = s.result;
   if (!r || !r.found) {
-    showMessage(`No dissection found${r && r.stopped ? ' before the stop' : ''}: the best candidate with ${r ? r.last_pieces : '?'} pieces had matching score E_M = ${r ? r.best_mismatch : '?'}.`);
+    const constrained = r && r.ranking && Object.keys(r.ranking.constraints || {}).length > 0;
+    showMessage(`No dissection found${r && r.stopped ? ' before the stop' : ''}${constrained ? ' that honours the constraints' : ''}: the best candidate with ${r ? r.last_pieces : '?'} pieces had matching score E_M = ${r ? r.best_mismatch : '?'}.`);
     return;
   }
-  state.result = { lattice: job.lattice, ...r };
+  state.run = { lattice: job.lattice, ...r, solutions: r.solutions?.length ? r.solutions : [{ ...r, position: 1, assemblies: [] }] };
+  renderBrowser();
+  selectSolution(0);
+}
+
+// ------------------------------------------------------- solutions browser
+
+const RANKS = { variance: 'area variance', smallest: 'largest smallest piece', shapes: 'fewest shapes', symmetry: 'most symmetric', unique: 'fewest assemblies' };
+
+/** A solution's scores in words. */
+function scoresText(sc) {
+  if (!sc) return '';
+  const parts = [`variance ${fmt(sc.variance, 2)}`, `smallest ${sc.smallest}`, `${sc.shapes} shape${sc.shapes === 1 ? '' : 's'}`, `symmetry ${sc.symmetry}`];
+  if (sc.objective !== undefined && sc.objective !== sc.variance) parts.push(`objective ${fmt(sc.objective, 2)}`);
+  return parts.join(' · ');
+}
+
+/** One figure's assembly count in words: `8 tilings (1 up to symmetry)`. */
+function countText(c) {
+  return c.complete
+    ? `${c.tilings} tiling${c.tilings === 1 ? '' : 's'} (${c.up_to_symmetry} up to symmetry)`
+    : `at least ${c.tilings} tilings (count cut short)`;
+}
+
+function uniqueMark() {
+  const u = document.createElement('span');
+  u.className = 'unique';
+  u.dataset.testid = 'unique';
+  u.textContent = 'unique';
+  u.title = 'the pieces assemble into this figure in one way only (up to its symmetries)';
+  return u;
+}
+
+/** The list of solutions with their scores and rank (shown when there are several). */
+function renderBrowser() {
+  const run = state.run;
+  const list = $('#sol-list');
+  list.textContent = '';
+  const n = run.solutions.length;
+  $('#browser').hidden = n < 2 && !run.ranking;
+  const by = run.ranking ? RANKS[run.ranking.by] || run.ranking.by : null;
+  $('#sol-ranking').textContent = run.ranking
+    ? `ranked by ${by}; ${run.ranking.found} found of ${run.ranking.asked} asked for`
+    : '';
+  run.solutions.forEach((s, i) => {
+    const li = document.createElement('li');
+    li.dataset.testid = `sol-${i}`;
+    const head = document.createElement('b');
+    head.textContent = `#${s.position ?? i + 1}`;
+    const body = document.createElement('span');
+    body.textContent = `${s.pieces} pieces`;
+    const sc = document.createElement('span');
+    sc.className = 'scores';
+    sc.textContent = scoresText(s.scores);
+    const asm = document.createElement('span');
+    asm.textContent = (s.assemblies || []).map((c) => (c.complete ? c.up_to_symmetry : `≥${c.up_to_symmetry}`)).join(' + ');
+    asm.title = 'assemblies up to symmetry, per figure';
+    li.append(head, body, sc, asm);
+    if (s.unique) li.append(uniqueMark());
+    li.onclick = () => selectSolution(i);
+    list.append(li);
+  });
+}
+
+/** Shows solution i of the run (0-based): its pieces, counts, motion and downloads. */
+function selectSolution(i) {
+  const run = state.run;
+  const n = run.solutions.length;
+  const k = Math.max(0, Math.min(n - 1, i));
+  const s = run.solutions[k];
+  state.current = k;
+  state.result = {
+    ...run,
+    pieces: s.pieces, areas: s.areas, area_variance: s.area_variance,
+    solution: s.solution, solution_text: s.solution_text,
+    optimal: s.solution?.optimal ?? run.optimal,
+    current: s,
+  };
+  $('#sol-position').textContent = `Solution ${k + 1} of ${n}`;
+  $('#sol-prev').disabled = k === 0;
+  $('#sol-next').disabled = k === n - 1;
+  $$('#sol-list li').forEach((li, j) => li.classList.toggle('current', j === k));
   showResult();
+}
+
+/** The assembly count per figure of the solution shown, with the unique mark. */
+function showAssemblies(s) {
+  const el = $('#assemblies');
+  el.textContent = '';
+  const counts = s?.assemblies || [];
+  if (!counts.length) return;
+  const label = document.createElement('span');
+  label.textContent = 'Assemblies:';
+  el.append(label);
+  counts.forEach((c, fi) => {
+    const item = document.createElement('span');
+    item.dataset.testid = `assemblies-${fi}`;
+    item.textContent = `${c.figure}: ${countText(c)} `;
+    if (!c.complete) item.classList.add('partial');
+    if (c.unique) item.append(uniqueMark());
+    el.append(item);
+  });
 }
 
 // ----------------------------------------------------------------- result
@@ -768,7 +987,10 @@ function showResult() {
   $('#result').hidden = false;
   $('#result-summary').textContent =
     `${r.pieces} pieces${r.optimal ? ' (optimal)' : ` (lower bound ${r.lower_bound})`} · area variance ${Number(r.area_variance).toFixed(2)} · piece areas ${r.areas.join(', ')} · ` +
-    `${r.seconds.toFixed(2)} s${r.stopped ? ' (stopped: best found so far)' : ''}`;
+    `${r.seconds.toFixed(2)} s${r.stopped ? ' (stopped: best found so far)' : ''}` +
+    (r.current?.scores ? ` · ${scoresText(r.current.scores)}` : '') +
+    (r.current?.rank ? ` · rank ${r.current.rank.position} by ${RANKS[r.current.rank.by] || r.current.rank.by}` : '');
+  showAssemblies(r.current);
   const legend = $('#legend');
   legend.textContent = '';
   r.areas.forEach((a, i) => {
@@ -882,11 +1104,17 @@ function setLattice(l) {
   if (state.lattice !== l) {
     state.lattice = l;
     $('#lattice').value = l;
-    state.figures.forEach((f) => { f.cells.clear(); f.d = 1; f.layer = 0; });
+    state.figures.forEach((f) => { f.cells.clear(); f.keep.clear(); f.d = 1; f.layer = 0; });
     state.undo = []; state.redo = [];
   }
   document.body.classList.toggle('cubic', geo(l).layers);
   $('#opt-mirror').disabled = !geo(l).mirror;
+  // The checkerboard rule only where the engine offers it (its lattice description says so).
+  const board = !!geo(l).checkerboard;
+  $('#opt-checkerboard').disabled = !board;
+  if (!board) $('#opt-checkerboard').checked = false;
+  $('#checkerboard-label').classList.toggle('off', !board);
+  $('#checkerboard-label').title = board ? 'every piece keeps the colour of each of its cells in a checkerboard colouring' : `no checkerboard colouring on the ${l} lattice`;
 }
 
 function selectTool(tool) {
@@ -925,12 +1153,35 @@ async function init() {
     if ((ev.ctrlKey || ev.metaKey) && k === 'z' && !ev.shiftKey) { ev.preventDefault(); $('#undo').click(); }
     else if ((ev.ctrlKey || ev.metaKey) && (k === 'y' || (k === 'z' && ev.shiftKey))) { ev.preventDefault(); $('#redo').click(); }
     else if (!ev.ctrlKey && !ev.metaKey) {
-      const tool = { p: 'pen', e: 'erase', r: 'rect', f: 'fill' }[k];
+      const tool = { p: 'pen', e: 'erase', r: 'rect', f: 'fill', k: 'keep' }[k];
       if (tool) selectTool(tool);
+      if (tool === 'keep') $('details.puzzle').open = true;
     }
   });
   window.addEventListener('studio-hover-piece', (ev) => highlight(ev.detail));
   $('#solve').onclick = startSolve;
+  // The keep tool's letters, each in its palette colour.
+  const letters = $('#keep-letter');
+  for (const l of LETTERS) {
+    const o = document.createElement('option');
+    o.value = l;
+    o.textContent = l;
+    o.style.background = letterColour(l);
+    letters.append(o);
+  }
+  state.keepLetter = 'a';
+  const showLetter = () => { letters.style.background = letterColour(state.keepLetter); };
+  letters.onchange = () => { state.keepLetter = letters.value; showLetter(); selectTool('keep'); };
+  showLetter();
+  for (const sel of ['#opt-solutions', '#opt-rank', '#opt-min-piece', '#opt-max-piece', '#opt-symmetry', '#opt-checkerboard']) {
+    // On every keystroke: the summary's height settles before a click on Solve.
+    $(sel).addEventListener('input', updatePuzzleSet);
+    $(sel).addEventListener('change', updatePuzzleSet);
+  }
+  // Painting keep regions opens the Puzzle options, where they are listed.
+  $('.tool[data-tool=keep]').addEventListener('click', () => { $('details.puzzle').open = true; });
+  $('#sol-prev').onclick = () => selectSolution(state.current - 1);
+  $('#sol-next').onclick = () => selectSolution(state.current + 1);
   $('#stop').onclick = () => { if (state.job) api('POST', `/api/solve/${state.job.id}/stop`).catch((e) => showMessage(e.message)); };
   $('#dl-json').onclick = () => download('dissection.json', state.result.solution_text, 'application/json');
   $('#dl-figures').onclick = async () => {

@@ -337,3 +337,117 @@ test('figure files load from disk; Stop ends a long solve and keeps what was fou
   assert.ok(shown || /No dissection found before the stop/.test(message), message);
   assert.deepEqual(pageErrors, []);
 });
+
+// ------------------------------------------------------------- puzzles (issue 14)
+
+/** Downloads the JSON of the solution shown and checks it with verify.py against the figures. */
+async function verifyShown(lattice) {
+  const json = await saveDownload(() => page.click('[data-testid=download-json]'));
+  const figs = [];
+  for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
+  const solution = JSON.parse(fs.readFileSync(json, 'utf8'));
+  const out = execFileSync('python3', [VERIFY, '--lattice', lattice, '--solution', json, ...figs], { encoding: 'utf8' });
+  assert.match(out, new RegExp(`valid: ${solution.figures[0].pieces.length} pieces`));
+  return solution;
+}
+
+test('several solutions: the browser steps through them with their scores, rank and assembly counts', async () => {
+  await open();
+  await page.selectOption('[data-testid=example]', 'squares-3-4-to-5');
+  await page.waitForFunction(() => window.studio.figures.length === 2 && window.studio.figures[1].cells.size === 25);
+  assert.ok(!(await page.isVisible('[data-testid=opt-solutions]')), 'the Puzzle options start closed');
+  await page.click('[data-testid=puzzle] summary');
+  await page.fill('[data-testid=opt-solutions]', '3');
+  await page.selectOption('[data-testid=opt-rank]', 'smallest');
+  assert.match(await page.textContent('#puzzle-set'), /3 solutions, by smallest piece/);
+  await solveAndWait(40);
+  assert.ok(await page.isVisible('[data-testid=solutions]'), 'the solutions browser is shown');
+  const n = await page.locator('#sol-list li').count();
+  assert.ok(n >= 2 && n <= 3, `${n} solutions listed`);
+  assert.equal(await page.textContent('[data-testid=sol-position]'), `Solution 1 of ${n}`);
+  assert.match(await page.textContent('#sol-ranking'), /ranked by largest smallest piece/);
+  assert.ok(await page.isDisabled('[data-testid=sol-prev]'));
+  const seen = new Set();
+  let smallest = Infinity;
+  for (let i = 0; i < n; i++) {
+    if (i > 0) await page.click('[data-testid=sol-next]');
+    assert.equal(await page.textContent('[data-testid=sol-position]'), `Solution ${i + 1} of ${n}`);
+    assert.equal(await page.locator('#sol-list li.current').getAttribute('data-testid'), `sol-${i}`);
+    const summary = await page.textContent('[data-testid=result-summary]');
+    assert.match(summary, new RegExp(`rank ${i + 1} by largest smallest piece`));
+    // Ranked: the smallest piece never grows down the list.
+    const small = Number(/smallest (\d+)/.exec(summary)[1]);
+    assert.ok(small <= smallest, summary);
+    smallest = small;
+    // One assembly count per figure, the unique mark where the count is 1.
+    const counts = await page.evaluate(() => window.studio.result.current.assemblies);
+    assert.equal(counts.length, 2);
+    for (const [fi, c] of counts.entries()) {
+      const text = await page.textContent(`[data-testid=assemblies-${fi}]`);
+      assert.match(text, /tilings? \(\d+ up to symmetry\)|at least/);
+      const marked = await page.locator(`[data-testid=assemblies-${fi}] [data-testid=unique]`).count();
+      assert.equal(marked, c.unique ? 1 : 0, text);
+    }
+    const solution = await verifyShown('square');
+    assert.equal(solution.rank.position, i + 1);
+    seen.add(JSON.stringify(solution.figures[0].pieces));
+  }
+  assert.equal(seen.size, n, 'different solutions');
+  assert.ok(await page.isDisabled('[data-testid=sol-next]'));
+  await page.click('[data-testid=sol-0]');
+  assert.equal(await page.textContent('[data-testid=sol-position]'), `Solution 1 of ${n}`);
+  await page.locator('#result').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(DOCS, 'studio-solutions.png'), fullPage: true });
+});
+
+test('keep-whole regions painted on a figure, piece sizes and the checkerboard switch reach the solver', async () => {
+  await open();
+  // A 3×2 rectangle and a 6×1 bar: two bars of 3 without constraints.
+  await tool('rect');
+  await drag(0, [0, 0], [2, 1]);
+  await drag(1, [0, 0], [5, 0]);
+  assert.match(await page.textContent('[data-testid=areas]'), /every figure has 6 cells/);
+  // Paint the left column as region a (the K key picks the tool); painting
+  // an empty cell does nothing; a click on a painted cell unpaints it.
+  await page.keyboard.press('k');
+  assert.equal(await page.getAttribute('.tool.active', 'data-tool'), 'keep');
+  assert.ok(await page.isVisible('[data-testid=keep-summary]'), 'the keep tool opens the Puzzle options');
+  assert.ok(!(await card(0).locator('.clear-keep').isVisible()), 'nothing to clear yet');
+  await drag(0, [0, 0], [0, 1]);
+  await click(0, 5, 5);
+  assert.deepEqual(await page.evaluate(() => [...window.studio.figures[0].keep].sort()), [['0,0,0', 'a'], ['0,1,0', 'a']]);
+  await click(0, 1, 0);
+  await click(0, 1, 0);
+  assert.equal(await page.evaluate(() => window.studio.figures[0].keep.size), 2);
+  assert.match(await page.textContent('[data-testid=keep-summary]'), /figure-a\.txt: a \(2\)/);
+  // Undo takes the painting back, redo brings it again.
+  await page.click('[data-testid=undo]');
+  await page.click('[data-testid=redo]');
+  assert.equal(await page.evaluate(() => window.studio.figures[0].keep.size), 2);
+  assert.ok(await card(0).locator('.clear-keep').isVisible());
+  assert.ok(!(await card(1).locator('.clear-keep').isVisible()));
+  await page.screenshot({ path: path.join(DOCS, 'studio-keep.png') });
+  assert.ok(!(await page.isDisabled('[data-testid=opt-checkerboard]')), 'square has a checkerboard');
+  await page.fill('[data-testid=opt-max-piece]', '4');
+  await solveAndWait(20);
+  const solution = await verifyShown('square');
+  // The column is one piece: three dominoes, as the file records.
+  assert.deepEqual(solution.constraints, { keep: [{ figure: 1, regions: { a: [[0, 0], [0, 1]] } }], max_piece: 4 });
+  const pieces = solution.figures[0].pieces;
+  assert.equal(pieces.length, 3);
+  assert.ok(pieces.some((p) => JSON.stringify(p.map(String).sort()) === JSON.stringify(['0,0', '0,1'])), JSON.stringify(pieces));
+  // The bar assembles in one way: unique; the rectangle in more.
+  assert.equal(await page.locator('[data-testid=assemblies-1] [data-testid=unique]').count(), 1);
+  assert.equal(await page.locator('[data-testid=assemblies-0] [data-testid=unique]').count(), 0);
+
+  // Impossible bounds: a clear message, no solve.
+  await page.fill('[data-testid=opt-min-piece]', '5');
+  await page.click('[data-testid=solve]');
+  await page.waitForSelector('#message:not([hidden])');
+  assert.match(await page.textContent('#message'), /cannot all hold: impossible: min_piece 5 is larger than max_piece 4/);
+
+  // No checkerboard on hexagons.
+  await page.selectOption('[data-testid=lattice]', 'hex');
+  assert.ok(await page.isDisabled('[data-testid=opt-checkerboard]'));
+  assert.deepEqual(pageErrors, []);
+});
