@@ -829,9 +829,8 @@ function scoresText(sc) {
 
 /** One figure's assembly count in words: `8 tilings (1 up to symmetry)`. */
 function countText(c) {
-  return c.complete
-    ? `${c.tilings} tiling${c.tilings === 1 ? '' : 's'} (${c.up_to_symmetry} up to symmetry)`
-    : `at least ${c.tilings} tilings (count cut short)`;
+  if (c.complete) return `${c.tilings} tiling${c.tilings === 1 ? '' : 's'} (${c.up_to_symmetry} up to symmetry)`;
+  return c.tilings > 0 ? `at least ${c.tilings} tilings (count cut short)` : 'not counted (stopped)';
 }
 
 function uniqueMark() {
