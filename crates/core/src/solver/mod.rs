@@ -21,6 +21,7 @@ pub(crate) mod flood_fill;
 pub(crate) mod greedy;
 mod incumbent;
 pub(crate) mod levels;
+mod lookahead;
 pub(crate) mod matching;
 mod options;
 mod paper;

@@ -2,18 +2,15 @@
 //! level of explorations in batches, what a level settles (a valid result,
 //! else a near miss finished by the repairer).
 
-use std::collections::VecDeque;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
-
-use rayon::prelude::*;
 
 use crate::figure::Figure;
 use crate::lattice::Cell;
 use crate::solver::candidate::{Candidate, Problem, Score};
 use crate::solver::explore::{self, Batch, Executor, Exploration, ExplorationError};
 use crate::solver::{
-    problem_of, Event, Found, Observer, Options, Repair, SolveError, Via, MAX_THREADS,
+    lookahead, problem_of, Event, Found, Observer, Options, Repair, SolveError, Via, MAX_THREADS,
 };
 
 /// What one level of explorations produced.
@@ -77,10 +74,19 @@ pub(crate) enum From<'p> {
     Above(&'p Candidate, usize),
 }
 
-/// Explorations run ahead per worker thread (in whole batches, see
-/// [`Search::level`]); at most `MAX_AHEAD` batches.
+/// Explorations a level runs ahead of the first one not yet decided, per
+/// worker thread (see [`Search::level`]): at least one batch, at most
+/// `MAX_AHEAD` batches.
 const AHEAD_PER_THREAD: usize = 4;
 const MAX_AHEAD: usize = 8;
+
+/// Where a level's exploration results come from.
+enum Feed<'t, 's> {
+    /// The solver's pool, in index order.
+    Pool(&'t mut lookahead::Taker<'s, (Candidate, Score)>),
+    /// An executor, one batch at a time.
+    Executor(&'t dyn Executor),
+}
 
 /// One search's fixed context.
 pub(crate) struct Search<'a> {
@@ -279,96 +285,97 @@ impl<'a> Search<'a> {
                 true,
             ),
         };
-        let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(n);
         let batch = options.batch.max(1);
         let near_miss = options.near_miss(self.figures.len(), self.figures[0].len());
-        let mut start = first;
-        let mut planned = first + n;
-        let mut stopped = false;
-        // Explorations run ahead of the batch being decided, up to `ahead`
-        // batches at once (the pool's path; an executor gets one batch at a
-        // time), so that many threads meet at a barrier once per window
-        // rather than once per batch. Results are still taken batch by
-        // batch in index order and those past the batch that decides the
-        // level are dropped: the answer does not depend on the threads.
-        let ahead = (AHEAD_PER_THREAD * self.pool.current_num_threads())
-            .div_ceil(batch)
-            .clamp(1, MAX_AHEAD);
-        let mut pending: VecDeque<(Candidate, Score)> = VecDeque::new();
-        while start < planned {
-            let end = (start + batch).min(planned);
-            let chunk: Vec<(Candidate, Score)> = match self.executor {
-                None => {
-                    if pending.len() < end - start {
-                        let from = start + pending.len();
-                        let to = (start + batch * ahead).min(planned);
-                        let more: Vec<(Candidate, Score)> = self
-                            .pool
-                            .install(|| (from..to).into_par_iter().map(run_one).collect());
-                        pending.extend(more);
-                    }
-                    pending.drain(..end - start).collect()
-                }
-                Some(ex) => {
-                    let batch = Batch {
-                        round,
-                        level,
-                        descent,
-                        indices: start..end,
-                        parents: &parents,
-                    };
-                    let got = ex.run(&batch).map_err(ExplorationError::Executor)?;
-                    if got.len() != end - start {
-                        return Err(ExplorationError::Count {
-                            got: got.len(),
-                            want: end - start,
+        // Results are decided batch by batch in index order, whoever runs
+        // them; those past the batch that decides the level are dropped, so
+        // the answer does not depend on the threads.
+        let decide = |mut feed: Feed<'_, '_>| -> Result<Level, SolveError> {
+            let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(n);
+            let mut start = first;
+            let mut planned = first + n;
+            let mut stopped = false;
+            while start < planned {
+                let end = (start + batch).min(planned);
+                let mut chunk: Vec<(Candidate, Score)> = match &mut feed {
+                    Feed::Pool(taker) => taker.take(end - start),
+                    Feed::Executor(ex) => {
+                        let batch = Batch {
+                            round,
+                            level,
+                            descent,
+                            indices: start..end,
+                            parents: &parents,
+                        };
+                        let got = ex.run(&batch).map_err(ExplorationError::Executor)?;
+                        if got.len() != end - start {
+                            return Err(ExplorationError::Count {
+                                got: got.len(),
+                                want: end - start,
+                            }
+                            .into());
                         }
-                        .into());
+                        let mut chunk = Vec::with_capacity(got.len());
+                        for e in got {
+                            e.check(&self.problem)?;
+                            let result = (e.candidate, e.score);
+                            note(&result);
+                            chunk.push(result);
+                        }
+                        chunk
                     }
-                    let mut chunk = Vec::with_capacity(got.len());
-                    for e in got {
-                        e.check(&self.problem)?;
-                        let result = (e.candidate, e.score);
-                        note(&result);
-                        chunk.push(result);
-                    }
-                    chunk
+                };
+                for (cand, score) in &mut chunk {
+                    self.judge(cand, score);
                 }
-            };
-            let mut chunk = chunk;
-            for (cand, score) in &mut chunk {
-                self.judge(cand, score);
+                results.extend(chunk);
+                start = end;
+                if self.stopped() {
+                    stopped = true;
+                    break;
+                }
+                if !options.full_levels && results.iter().any(|(_, s)| s.valid) {
+                    break;
+                }
+                // A level that ends a near miss gets more rounds of
+                // explorations (new streams, same parents) before the next
+                // level is tried.
+                let best_mismatch = results
+                    .iter()
+                    .map(|(_, s)| s.mismatch)
+                    .min()
+                    .unwrap_or(u64::MAX);
+                if start == planned
+                    && planned - first < n.saturating_mul(1 + extra_rounds)
+                    && best_mismatch <= near_miss
+                {
+                    planned += n;
+                    if let Feed::Pool(taker) = &mut feed {
+                        taker.extend_to(planned);
+                    }
+                    total.store(planned - first, Ordering::Relaxed);
+                    self.observer.on_event(&Event::LevelStarted {
+                        level,
+                        pieces,
+                        explorations: planned - first,
+                    });
+                }
             }
-            results.extend(chunk);
-            start = end;
-            if self.stopped() {
-                stopped = true;
-                break;
+            Ok(Level { results, stopped })
+        };
+        // The pool's threads run explorations without barriers, each taking
+        // the next index as soon as it is free, at most `window` beyond the
+        // first one not yet decided; an executor gets one batch at a time.
+        let level_result = match self.executor {
+            None => {
+                let window = (AHEAD_PER_THREAD * self.pool.current_num_threads())
+                    .clamp(batch, MAX_AHEAD * batch);
+                lookahead::ordered(&self.pool, first, first + n, window, run_one, |t| {
+                    decide(Feed::Pool(t))
+                })?
             }
-            if !options.full_levels && results.iter().any(|(_, s)| s.valid) {
-                break;
-            }
-            // A level that ends a near miss gets more rounds of explorations
-            // (new streams, same parents) before the next level is tried.
-            let best_mismatch = results
-                .iter()
-                .map(|(_, s)| s.mismatch)
-                .min()
-                .unwrap_or(u64::MAX);
-            if start == planned
-                && planned - first < n.saturating_mul(1 + extra_rounds)
-                && best_mismatch <= near_miss
-            {
-                planned += n;
-                total.store(planned - first, Ordering::Relaxed);
-                self.observer.on_event(&Event::LevelStarted {
-                    level,
-                    pieces,
-                    explorations: planned - first,
-                });
-            }
-        }
-        let level_result = Level { results, stopped };
+            Some(ex) => decide(Feed::Executor(ex))?,
+        };
         self.observer.on_event(&Event::LevelFinished {
             level,
             pieces,
