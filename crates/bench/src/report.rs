@@ -379,8 +379,8 @@ pub fn scale_table(steps: &[ScaleStep], style: Style) -> String {
 
 /// The replay of a recorded run on each of `threads` simulated threads:
 /// makespan, speed-up over one thread and waiting fraction, with a barrier
-/// after every `batch` explorations and without barriers (levels keep their
-/// barriers in both).
+/// after every `batch` explorations, without barriers, and the solver's way
+/// (no barriers, a sliding window; levels keep their barriers in all).
 pub fn replay_table(
     recording: &crate::schedule::Recording,
     batch: usize,
@@ -419,7 +419,7 @@ pub fn replay_table(
             let b = replay_levels(&levels, batch, t);
             let f = replay_levels(&levels, 0, t);
             let w = crate::schedule::window(batch, t);
-            let wr = replay_levels(&levels, w, t);
+            let wr = crate::schedule::replay_levels_window(&levels, w, t);
             vec![
                 t.to_string(),
                 format!("{:.3}", b.makespan),

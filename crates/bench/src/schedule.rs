@@ -6,7 +6,9 @@
 //! Explorations start in index order on the first free thread (what a
 //! work-stealing pool does with equal priorities). With batch barriers, a
 //! batch starts when the whole batch before it has finished; without them a
-//! thread takes the next exploration as soon as it is free.
+//! thread takes the next exploration as soon as it is free; the solver's
+//! schedule is the latter within a sliding window ([`window`],
+//! [`replay_window`]).
 
 use std::collections::HashMap;
 use std::sync::Mutex;
@@ -19,13 +21,14 @@ use dissect_engine::{EngineEvent, EngineObserver};
 /// The simulated thread counts of a replay.
 pub const REPLAY_THREADS: [usize; 5] = [1, 2, 4, 8, 16];
 
-/// The explorations between two barriers of the solver's pool on
-/// `threads` threads: it runs 4 explorations per thread ahead of the batch
-/// being decided, in whole batches, at most 8 batches (the constants of
-/// `dissect_core::solver::Search::level`, repeated here).
+/// How many explorations the solver's pool runs ahead of the first one it
+/// has not yet decided on `threads` threads: 4 per thread, at least one
+/// batch, at most 8 batches (the constants of `dissect_core`'s level
+/// search, repeated here). There is no barrier: a thread starts the next
+/// exploration as soon as it is free, unless that one is this far ahead.
 pub fn window(batch: usize, threads: usize) -> usize {
     let batch = batch.max(1);
-    batch * (4 * threads.max(1)).div_ceil(batch).clamp(1, 8)
+    (4 * threads.max(1)).clamp(batch, 8 * batch)
 }
 
 /// One level's schedule on `threads` threads.
@@ -68,6 +71,60 @@ fn list_schedule(durations: &[f64], threads: usize, start: f64) -> f64 {
         end = end.max(free[i]);
     }
     end
+}
+
+/// The schedule of `durations` (in index order) on `threads` threads with
+/// no barrier but a sliding window: exploration `i` starts on the first
+/// free thread once every exploration up to `i − window` has ended (the
+/// solver takes results in index order and runs at most `window` beyond
+/// the first one it has not taken). The time the last one ends.
+fn window_schedule(durations: &[f64], window: usize, threads: usize) -> f64 {
+    let window = window.max(1);
+    let mut free = vec![0.0f64; threads.max(1)];
+    // prefix[i]: when explorations 0..=i have all ended.
+    let mut prefix: Vec<f64> = Vec::with_capacity(durations.len());
+    for (i, &d) in durations.iter().enumerate() {
+        let gate = if i >= window { prefix[i - window] } else { 0.0 };
+        let (k, t) = free
+            .iter()
+            .copied()
+            .enumerate()
+            .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)))
+            .expect("at least one thread");
+        let end = t.max(gate) + d;
+        free[k] = end;
+        prefix.push(prefix.last().copied().unwrap_or(0.0).max(end));
+    }
+    prefix.last().copied().unwrap_or(0.0)
+}
+
+/// A level run the solver's way: no barriers, at most `window`
+/// explorations ahead of the first one not yet decided.
+pub fn replay_window(durations: &[f64], window: usize, threads: usize) -> Replay {
+    Replay {
+        threads: threads.max(1),
+        makespan: window_schedule(durations, window, threads),
+        work: durations.iter().sum(),
+    }
+}
+
+/// [`replay_window`] of several levels one after the other.
+pub fn replay_levels_window(levels: &[Vec<f64>], window: usize, threads: usize) -> Replay {
+    levels.iter().fold(
+        Replay {
+            threads: threads.max(1),
+            makespan: 0.0,
+            work: 0.0,
+        },
+        |acc, l| {
+            let r = replay_window(l, window, threads);
+            Replay {
+                threads: acc.threads,
+                makespan: acc.makespan + r.makespan,
+                work: acc.work + r.work,
+            }
+        },
+    )
 }
 
 /// A level whose explorations took `durations` seconds, run in batches of
