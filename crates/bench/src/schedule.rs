@@ -325,8 +325,16 @@ impl EngineObserver for Recorder {
                 s.current_level = *level;
                 s.current.push(seconds);
             }
-            EngineEvent::Search(Event::LevelFinished { level, .. }) if !s.current.is_empty() => {
-                let seconds = std::mem::take(&mut s.current);
+            EngineEvent::Search(Event::LevelFinished {
+                level,
+                explorations,
+                ..
+            }) if !s.current.is_empty() => {
+                // The level's own explorations: on one thread the first
+                // ones to end; those the pool ran past the deciding batch
+                // (and dropped) are not the level's.
+                let mut seconds = std::mem::take(&mut s.current);
+                seconds.truncate(*explorations);
                 s.levels.push(RecordedLevel {
                     level: *level,
                     seconds,

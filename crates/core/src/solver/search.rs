@@ -220,10 +220,13 @@ impl<'a> Search<'a> {
                 g.1 = g.1.min(result.1.mismatch);
                 *g
             };
+            // Explorations run ahead of the deciding batch count too, up to
+            // the level's total.
+            let total = total.load(Ordering::Relaxed);
             self.observer.on_event(&Event::Exploration {
                 level,
-                done: d,
-                total: total.load(Ordering::Relaxed),
+                done: d.min(total),
+                total,
                 best_score: bs,
                 best_mismatch: bm,
             });
