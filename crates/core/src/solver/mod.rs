@@ -65,7 +65,10 @@ pub enum Event {
         /// Explorations planned.
         explorations: usize,
     },
-    /// An exploration finished.
+    /// An exploration finished, on the thread that ran it. Explorations
+    /// the pool ran ahead of the batch that decided the level (dropped, so
+    /// not counted in [`Outcome::explorations`]) are reported too: this is
+    /// the work done, `done` capped at `total`.
     Exploration {
         /// The level.
         level: usize,

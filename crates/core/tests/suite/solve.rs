@@ -216,7 +216,19 @@ fn explorations_are_reported() {
         .iter()
         .filter(|e| matches!(e, Event::Exploration { .. }))
         .count();
-    assert_eq!(explorations + 1, outcome.explorations, "level 0 counts one");
+    // Level 0 counts one; the pool may also have run (and dropped) a few
+    // explorations past the batch that decided a level, at most its
+    // window (one batch on one thread) per level.
+    let levels = events
+        .iter()
+        .filter(|e| matches!(e, Event::LevelFinished { .. }))
+        .count();
+    assert!(
+        explorations + 1 >= outcome.explorations
+            && explorations + 1 <= outcome.explorations + levels * small(3, 1).batch,
+        "{explorations} reported, {} counted, {levels} levels",
+        outcome.explorations
+    );
     assert!(matches!(
         events.first(),
         Some(Event::LevelStarted {
