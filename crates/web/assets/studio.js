@@ -830,7 +830,9 @@ function scoresText(sc) {
 /** One figure's assembly count in words: `8 tilings (1 up to symmetry)`. */
 function countText(c) {
   if (c.complete) return `${c.tilings} tiling${c.tilings === 1 ? '' : 's'} (${c.up_to_symmetry} up to symmetry)`;
-  return c.tilings > 0 ? `at least ${c.tilings} tilings (count cut short)` : 'not counted (stopped)';
+  return c.tilings > 0
+    ? `at least ${c.tilings} tilings (count cut short)`
+    : `count not finished (stopped after ${fmt(c.seconds, 1)} s)`;
 }
 
 function uniqueMark() {
@@ -1118,6 +1120,8 @@ function setLattice(l) {
 
 function selectTool(tool) {
   state.tool = tool;
+  // Painting keep regions opens the Puzzle options, where they are listed.
+  if (tool === 'keep') $('details.puzzle').open = true;
   $$('.tool').forEach((b) => b.classList.toggle('active', b.dataset.tool === tool));
 }
 
@@ -1154,7 +1158,6 @@ async function init() {
     else if (!ev.ctrlKey && !ev.metaKey) {
       const tool = { p: 'pen', e: 'erase', r: 'rect', f: 'fill', k: 'keep' }[k];
       if (tool) selectTool(tool);
-      if (tool === 'keep') $('details.puzzle').open = true;
     }
   });
   window.addEventListener('studio-hover-piece', (ev) => highlight(ev.detail));
@@ -1177,8 +1180,6 @@ async function init() {
     $(sel).addEventListener('input', updatePuzzleSet);
     $(sel).addEventListener('change', updatePuzzleSet);
   }
-  // Painting keep regions opens the Puzzle options, where they are listed.
-  $('.tool[data-tool=keep]').addEventListener('click', () => { $('details.puzzle').open = true; });
   $('#sol-prev').onclick = () => selectSolution(state.current - 1);
   $('#sol-next').onclick = () => selectSolution(state.current + 1);
   $('#stop').onclick = () => { if (state.job) api('POST', `/api/solve/${state.job.id}/stop`).catch((e) => showMessage(e.message)); };
