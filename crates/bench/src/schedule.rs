@@ -110,6 +110,12 @@ pub fn replay_window(durations: &[f64], window: usize, threads: usize) -> Replay
 
 /// [`replay_window`] of several levels one after the other.
 pub fn replay_levels_window(levels: &[Vec<f64>], window: usize, threads: usize) -> Replay {
+    in_sequence(levels, threads, |l| replay_window(l, window, threads))
+}
+
+/// Levels one after the other, each replayed by `one`: the summed
+/// makespans and work.
+fn in_sequence(levels: &[Vec<f64>], threads: usize, one: impl Fn(&[f64]) -> Replay) -> Replay {
     levels.iter().fold(
         Replay {
             threads: threads.max(1),
@@ -117,7 +123,7 @@ pub fn replay_levels_window(levels: &[Vec<f64>], window: usize, threads: usize) 
             work: 0.0,
         },
         |acc, l| {
-            let r = replay_window(l, window, threads);
+            let r = one(l);
             Replay {
                 threads: acc.threads,
                 makespan: acc.makespan + r.makespan,
@@ -148,21 +154,7 @@ pub fn replay(durations: &[f64], batch: usize, threads: usize) -> Replay {
 /// Several levels one after the other (a barrier between levels in every
 /// schedule: a level needs the one below): the summed makespans and work.
 pub fn replay_levels(levels: &[Vec<f64>], batch: usize, threads: usize) -> Replay {
-    levels.iter().fold(
-        Replay {
-            threads: threads.max(1),
-            makespan: 0.0,
-            work: 0.0,
-        },
-        |acc, l| {
-            let r = replay(l, batch, threads);
-            Replay {
-                threads: acc.threads,
-                makespan: acc.makespan + r.makespan,
-                work: acc.work + r.work,
-            }
-        },
-    )
+    in_sequence(levels, threads, |l| replay(l, batch, threads))
 }
 
 /// What a recorded exploration time measures.
