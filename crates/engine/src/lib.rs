@@ -33,7 +33,10 @@ mod verified;
 
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
-pub use options::{OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS};
+pub use options::{
+    OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS,
+    PLATEAU_IDLE_ROUNDS,
+};
 pub use repair::ExactRepair;
 pub use report::{End, Improvement, LowerBound, Ranking, Report, Solution, Source};
 pub use run::{check, run, run_with, EngineError, EngineEvent, EngineObserver, SLIVER_CELLS};

@@ -15,6 +15,9 @@ pub const MAX_EXPLORATIONS: usize = 1_000_000;
 const MAX_COUNT: usize = 1_000_000;
 /// Near misses repaired per level when several solutions are asked for.
 const PLATEAU_REPAIR_TRIES: usize = 8;
+/// Without a time limit, a run asked for several solutions ends after at
+/// least this many rounds in a row without fewer pieces or a new solution.
+pub const PLATEAU_IDLE_ROUNDS: usize = 8;
 /// The most solutions a run may be asked for (`--solutions`).
 pub const MAX_SOLUTIONS: usize = 1000;
 
@@ -276,6 +279,11 @@ impl RunOptions {
     pub fn anytime(&self) -> Anytime {
         Anytime {
             idle_rounds: match self.time_limit {
+                // Several solutions: a round that found a new one is no
+                // idle round, and more idle rounds are allowed.
+                None if self.config.solutions > 1 => {
+                    Some(self.config.idle_rounds.max(PLATEAU_IDLE_ROUNDS))
+                }
                 None => Some(self.config.idle_rounds),
                 Some(_) => None,
             },

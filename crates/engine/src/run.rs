@@ -115,6 +115,9 @@ struct Judge {
     /// Whether the constraints steer the search (keep regions, sizes).
     steer: bool,
     collection: Mutex<Collection>,
+    /// Solutions asked for: a new one up to this many is fresh (progress
+    /// for the run's work rule).
+    wanted: usize,
 }
 
 impl Judge {
@@ -251,11 +254,14 @@ impl Observer for Shared<'_> {
             return Judgement {
                 accept: true,
                 penalty,
+                fresh: false,
             };
         }
         let accept = j.constraints.check(&j.motions, pieces).is_empty();
+        let mut fresh = false;
         if accept {
             if let Some((pieces, count)) = j.collect(pieces) {
+                fresh = count <= j.wanted;
                 self.observer.on_event(&EngineEvent::Collected {
                     pieces,
                     count,
@@ -263,7 +269,11 @@ impl Observer for Shared<'_> {
                 });
             }
         }
-        Judgement { accept, penalty }
+        Judgement {
+            accept,
+            penalty,
+            fresh,
+        }
     }
 }
 
@@ -376,6 +386,7 @@ pub fn run_with(
                 || constraints.min_piece().is_some()
                 || constraints.max_piece().is_some(),
             collection: Mutex::new(Collection::new(motions.clone(), constraints.clone())),
+            wanted: config.solutions,
         }),
     };
     let wanted = config.solutions;
@@ -738,6 +749,7 @@ impl Observer for NoSlivers<'_, '_> {
         Judgement {
             accept: !valid || missing == 0,
             penalty: 2.0 * missing as f64,
+            fresh: false,
         }
     }
 }

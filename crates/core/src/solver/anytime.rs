@@ -25,7 +25,9 @@ const DESCENT_ATTEMPTS: usize = 4;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Anytime {
     /// End after this many rounds in a row that found no fewer pieces
-    /// (`None`: only a stop, or having nothing left to try, ends the run).
+    /// (with [`Anytime::plateau`]: nor a dissection the judge calls
+    /// fresh; `None`: only a stop, or having nothing left to try, ends
+    /// the run).
     pub idle_rounds: Option<usize>,
     /// Near-miss candidates handed to the repairer per level.
     pub repair_tries: usize,
@@ -109,8 +111,10 @@ pub fn solve_anytime_with(
         if !run.round_starts(round, idle) {
             break;
         }
+        let fresh = search.fresh();
         let improved = run.round(round, large)?;
-        if improved {
+        // With the plateau, new solutions the judge wanted are progress.
+        if improved || (anytime.plateau && search.fresh() > fresh) {
             idle = 0;
         } else {
             idle += 1;

@@ -176,6 +176,10 @@ pub struct Judgement {
     /// Added to the candidate's objective: a penalty steers which
     /// candidates a level keeps as parents of the next.
     pub penalty: f64,
+    /// A valid dissection the observer had not seen and wanted (several
+    /// solutions): with [`Anytime::plateau`] a round that meets one
+    /// counts as progress, not as an idle round.
+    pub fresh: bool,
 }
 
 impl Default for Judgement {
@@ -183,6 +187,7 @@ impl Default for Judgement {
         Judgement {
             accept: true,
             penalty: 0.0,
+            fresh: false,
         }
     }
 }

@@ -98,6 +98,8 @@ pub(crate) struct Search<'a> {
     pool: rayon::ThreadPool,
     /// Runs the batches instead of `pool` when set.
     executor: Option<&'a dyn Executor>,
+    /// Valid dissections the observer's judge called fresh so far.
+    fresh: AtomicUsize,
 }
 
 impl<'a> Search<'a> {
@@ -127,7 +129,13 @@ impl<'a> Search<'a> {
             observer,
             pool,
             executor,
+            fresh: AtomicUsize::new(0),
         })
+    }
+
+    /// Valid dissections the judge has called fresh so far.
+    pub(crate) fn fresh(&self) -> usize {
+        self.fresh.load(Ordering::Relaxed)
     }
 
     pub(crate) fn stopped(&self) -> bool {
@@ -148,6 +156,9 @@ impl<'a> Search<'a> {
             score.value += j.penalty;
         }
         score.valid &= j.accept;
+        if score.valid && j.fresh {
+            self.fresh.fetch_add(1, Ordering::Relaxed);
+        }
     }
 
     pub(crate) fn found(&self, cand: &Candidate, score: &Score, level: usize) -> Found {

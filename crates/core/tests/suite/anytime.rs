@@ -243,6 +243,7 @@ impl Observer for Judge {
         dissect_core::solver::Judgement {
             accept,
             penalty: if accept { 0.0 } else { 10.0 },
+            fresh: false,
         }
     }
 }
@@ -292,4 +293,79 @@ fn the_judge_refuses_answers_and_the_plateau_offers_more() {
         plateau.len(),
         plain.len()
     );
+}
+
+/// A judge that calls each dissection it has not seen before fresh, up to
+/// `wanted` of them, and counts the rounds.
+struct Fresh {
+    wanted: usize,
+    seen: Mutex<Vec<Vec<Vec<Vec<dissect_core::Cell>>>>>,
+    rounds: Mutex<usize>,
+}
+
+impl Observer for Fresh {
+    fn on_event(&self, event: &Event) {
+        if matches!(event, Event::RoundStarted { .. }) {
+            *self.rounds.lock().unwrap() += 1;
+        }
+    }
+    fn judges(&self) -> bool {
+        true
+    }
+    fn judge(
+        &self,
+        pieces: &[Vec<Vec<dissect_core::Cell>>],
+        valid: bool,
+    ) -> dissect_core::solver::Judgement {
+        let mut seen = self.seen.lock().unwrap();
+        let fresh = valid && seen.len() < self.wanted && !seen.iter().any(|p| p == pieces);
+        if fresh {
+            seen.push(pieces.to_vec());
+        }
+        dissect_core::solver::Judgement {
+            fresh,
+            ..Default::default()
+        }
+    }
+}
+
+/// With the plateau, a round that meets dissections the judge calls fresh
+/// is no idle round: the run goes on while they come, and still ends on
+/// its own (the same way for 1 and 2 threads).
+#[test]
+fn fresh_dissections_keep_a_plateau_run_going() {
+    let figures = [fig(Square, "####|####"), fig(Square, "########")];
+    let run = |wanted: usize, threads: usize| {
+        let judge = Fresh {
+            wanted,
+            seen: Mutex::new(Vec::new()),
+            rounds: Mutex::new(0),
+        };
+        let settings = Anytime {
+            idle_rounds: Some(1),
+            plateau: true,
+            ..Anytime::default()
+        };
+        let out = solve_anytime(
+            &figures,
+            &small(5, threads),
+            &settings,
+            &AtomicBool::new(false),
+            &judge,
+            None,
+        )
+        .unwrap();
+        let found = out.found.expect("a dissection");
+        assert!(verify_pieces(Square, true, &figures, &found.pieces).is_ok());
+        let rounds = *judge.rounds.lock().unwrap();
+        (rounds, judge.seen.into_inner().unwrap().len(), found.pieces)
+    };
+    let (without, _, _) = run(0, 1);
+    let (with, seen, answer) = run(1000, 1);
+    assert!(seen > 1, "{seen} fresh dissections");
+    assert!(
+        with > without,
+        "{with} rounds with fresh ones, {without} without"
+    );
+    assert_eq!(run(1000, 2), (with, seen, answer));
 }
