@@ -25,6 +25,9 @@ struct State<T> {
     end: usize,
     /// The caller is done: threads start nothing more.
     cancel: bool,
+    /// What a work item panicked with: nothing more starts, the caller
+    /// stops waiting, and [`ordered`] passes the panic on.
+    panic: Option<Box<dyn std::any::Any + Send>>,
 }
 
 /// The caller's side of [`ordered`]: takes results in index order.
@@ -43,11 +46,11 @@ impl<T> Taker<'_, T> {
     }
 
     /// The next `n` results in index order, waiting for each; fewer only
-    /// past the end.
+    /// past the end (or after a work item panicked).
     pub(crate) fn take(&mut self, n: usize) -> Vec<T> {
         let mut out = Vec::with_capacity(n);
         let mut state = self.lock();
-        while out.len() < n && state.taken < state.end {
+        while out.len() < n && state.taken < state.end && state.panic.is_none() {
             let i = state.taken;
             match state.done.remove(&i) {
                 Some(r) => {
@@ -101,6 +104,7 @@ where
         taken: first,
         end,
         cancel: false,
+        panic: None,
     });
     let (work_cv, ready) = (Condvar::new(), Condvar::new());
     let lock = || state.lock().unwrap_or_else(|e| e.into_inner());
@@ -118,14 +122,24 @@ where
                 s = work_cv.wait(s).unwrap_or_else(|e| e.into_inner());
             }
         };
-        let r = work(i);
+        // A panic ends the run instead of leaving the caller waiting for
+        // this index forever.
+        let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(i)));
         let mut s = lock();
-        if !s.cancel {
-            s.done.insert(i, r);
-            ready.notify_all();
+        match r {
+            Ok(r) if !s.cancel => {
+                s.done.insert(i, r);
+            }
+            Ok(_) => {}
+            Err(payload) => {
+                s.cancel = true;
+                s.panic.get_or_insert(payload);
+                work_cv.notify_all();
+            }
         }
+        ready.notify_all();
     };
-    pool.in_place_scope(|scope| {
+    let result = pool.in_place_scope(|scope| {
         for _ in 0..pool.current_num_threads() {
             scope.spawn(|_| worker());
         }
@@ -145,7 +159,11 @@ where
         }
         let _cancel = Cancel(&state, &work_cv);
         take(&mut taker)
-    })
+    });
+    if let Some(payload) = state.into_inner().unwrap_or_else(|e| e.into_inner()).panic {
+        std::panic::resume_unwind(payload);
+    }
+    result
 }
 
 #[cfg(test)]
@@ -214,6 +232,37 @@ mod tests {
         );
         assert_eq!(got, (vec![0, 1], vec![2, 3, 4], vec![5, 6]));
         assert!(highest.load(Ordering::SeqCst) <= 6);
+    }
+
+    #[test]
+    fn a_panicking_item_ends_the_run_with_its_panic_not_a_hang() {
+        let p = pool(2);
+        let got = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            ordered(
+                &p,
+                0,
+                100,
+                8,
+                |i| {
+                    assert!(i != 5, "item 5 fails");
+                    i
+                },
+                |t| {
+                    let mut all = Vec::new();
+                    for _ in 0..10 {
+                        all.extend(t.take(10));
+                    }
+                    all
+                },
+            )
+        }));
+        let payload = got.expect_err("the panic is passed on");
+        let message = payload
+            .downcast_ref::<String>()
+            .cloned()
+            .or_else(|| payload.downcast_ref::<&str>().map(|m| m.to_string()))
+            .unwrap_or_default();
+        assert!(message.contains("item 5 fails"), "{message}");
     }
 
     #[test]
