@@ -463,6 +463,34 @@ impl Constraints {
         Ok(())
     }
 
+    /// For every keep region of every figure: the figure, the region's
+    /// letter and the pieces (sorted, distinct) that hold its cells.
+    fn region_owners<'a>(
+        &'a self,
+        pieces: &'a [Vec<Vec<Cell>>],
+    ) -> impl Iterator<Item = (usize, char, Vec<usize>)> + 'a {
+        self.keep.iter().flat_map(move |k| {
+            let owner: HashMap<Cell, usize> = pieces
+                .get(k.figure)
+                .into_iter()
+                .flat_map(|fig| {
+                    fig.iter()
+                        .enumerate()
+                        .flat_map(|(i, p)| p.iter().map(move |c| (*c, i)))
+                })
+                .collect();
+            k.regions()
+                .map(move |(letter, cells)| {
+                    let mut ps: Vec<usize> =
+                        cells.iter().filter_map(|c| owner.get(c).copied()).collect();
+                    ps.sort_unstable();
+                    ps.dedup();
+                    (k.figure, letter, ps)
+                })
+                .collect::<Vec<_>>()
+        })
+    }
+
     /// How far a candidate (`pieces[f][i]`, maybe not yet a dissection) is
     /// from honouring the keep regions and the size bounds, cheaply: for
     /// every region, the pieces it touches beyond one; for every piece of
@@ -472,24 +500,10 @@ impl Constraints {
     /// the constraints (the checkerboard rule needs congruent pieces and is
     /// checked on dissections only).
     pub fn distance(&self, pieces: &[Vec<Vec<Cell>>]) -> usize {
-        let mut d = 0;
-        for k in &self.keep {
-            let Some(fig) = pieces.get(k.figure) else {
-                continue;
-            };
-            let owner: HashMap<Cell, usize> = fig
-                .iter()
-                .enumerate()
-                .flat_map(|(i, p)| p.iter().map(move |c| (*c, i)))
-                .collect();
-            for (_, cells) in k.regions() {
-                let mut ps: Vec<usize> =
-                    cells.iter().filter_map(|c| owner.get(c).copied()).collect();
-                ps.sort_unstable();
-                ps.dedup();
-                d += ps.len().saturating_sub(1);
-            }
-        }
+        let mut d: usize = self
+            .region_owners(pieces)
+            .map(|(_, _, ps)| ps.len().saturating_sub(1))
+            .sum();
         if let Some(first) = pieces.first() {
             for p in first.iter().filter(|p| !p.is_empty()) {
                 if let Some(m) = self.min_piece {
@@ -586,30 +600,15 @@ impl Constraints {
     /// Every way the dissection `pieces[f][i]` (a valid dissection: piece
     /// `i` congruent in every figure) breaks these constraints.
     pub fn check(&self, motions: &Motions, pieces: &[Vec<Vec<Cell>>]) -> Vec<Violation> {
-        let mut out = Vec::new();
-        for k in &self.keep {
-            let Some(fig) = pieces.get(k.figure) else {
-                continue;
-            };
-            let owner: HashMap<Cell, usize> = fig
-                .iter()
-                .enumerate()
-                .flat_map(|(i, p)| p.iter().map(move |c| (*c, i)))
-                .collect();
-            for (letter, cells) in k.regions() {
-                let mut ps: Vec<usize> =
-                    cells.iter().filter_map(|c| owner.get(c).copied()).collect();
-                ps.sort_unstable();
-                ps.dedup();
-                if ps.len() > 1 {
-                    out.push(Violation::RegionSplit {
-                        figure: k.figure,
-                        letter,
-                        pieces: ps,
-                    });
-                }
-            }
-        }
+        let mut out: Vec<Violation> = self
+            .region_owners(pieces)
+            .filter(|(_, _, ps)| ps.len() > 1)
+            .map(|(figure, letter, pieces)| Violation::RegionSplit {
+                figure,
+                letter,
+                pieces,
+            })
+            .collect();
         if let Some(first) = pieces.first() {
             for (i, p) in first.iter().enumerate() {
                 if self.min_piece.is_some_and(|m| p.len() < m) {
