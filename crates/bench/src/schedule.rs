@@ -55,18 +55,23 @@ impl Replay {
     }
 }
 
+/// The thread that is free first (the lowest index among equals) and
+/// when; `free` is never empty.
+fn earliest(free: &[f64]) -> (usize, f64) {
+    free.iter()
+        .copied()
+        .enumerate()
+        .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)))
+        .unwrap_or((0, 0.0))
+}
+
 /// The greedy schedule of `durations` (in index order) on `threads`
 /// threads, all free at time `start`; the time the last one ends.
 fn list_schedule(durations: &[f64], threads: usize, start: f64) -> f64 {
     let mut free = vec![start; threads.max(1)];
     let mut end = start;
     for &d in durations {
-        let (i, t) = free
-            .iter()
-            .copied()
-            .enumerate()
-            .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)))
-            .expect("at least one thread");
+        let (i, t) = earliest(&free);
         free[i] = t + d;
         end = end.max(free[i]);
     }
@@ -85,12 +90,7 @@ fn window_schedule(durations: &[f64], window: usize, threads: usize) -> f64 {
     let mut prefix: Vec<f64> = Vec::with_capacity(durations.len());
     for (i, &d) in durations.iter().enumerate() {
         let gate = if i >= window { prefix[i - window] } else { 0.0 };
-        let (k, t) = free
-            .iter()
-            .copied()
-            .enumerate()
-            .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)))
-            .expect("at least one thread");
+        let (k, t) = earliest(&free);
         let end = t.max(gate) + d;
         free[k] = end;
         prefix.push(prefix.last().copied().unwrap_or(0.0).max(end));
