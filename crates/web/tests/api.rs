@@ -8,30 +8,13 @@ use axum::http::{Request, StatusCode};
 use axum::Router;
 use dissect_core::io::{parse_figure, parse_solution};
 use dissect_core::LatticeKind;
-use dissect_web::{router, Limits};
+use dissect_web::Limits;
 use http_body_util::BodyExt;
 use serde_json::{json, Value};
 use tower::ServiceExt;
 
-/// Small limits: 1 worker thread, at most 1 solve at a time, 200 cells.
-fn app() -> Router {
-    router(Limits::new(200, 64, 4, 1, 60.0, 1))
-}
-
-async fn call(app: &Router, method: &str, uri: &str, body: &str) -> (StatusCode, Value) {
-    let req = Request::builder()
-        .method(method)
-        .uri(uri)
-        .header("content-type", "application/json")
-        .body(Body::from(body.to_string()))
-        .unwrap();
-    let res = app.clone().oneshot(req).await.unwrap();
-    let status = res.status();
-    let bytes = res.into_body().collect().await.unwrap().to_bytes();
-    let v = serde_json::from_slice(&bytes)
-        .unwrap_or_else(|_| panic!("not JSON: {}", String::from_utf8_lossy(&bytes)));
-    (status, v)
-}
+mod common;
+use common::{app, call, wait_done};
 
 fn code(v: &Value) -> &str {
     v["error"]["code"].as_str().unwrap_or("(no error code)")
@@ -196,19 +179,6 @@ async fn figures_route_reads_texts_and_cells() {
     assert_eq!(v["figures"][1]["text"], "3\n");
     assert_eq!(v["figures"][1]["cells"], json!([[0, 0, 0], [0, 0, 1]]));
     assert_eq!(v["equal_areas"], false);
-}
-
-async fn wait_done(app: &Router, id: u64, within: Duration) -> Value {
-    let start = Instant::now();
-    loop {
-        let (s, v) = call(app, "GET", &format!("/api/solve/{id}"), "").await;
-        assert_eq!(s, StatusCode::OK);
-        if v["state"] != "running" {
-            return v;
-        }
-        assert!(start.elapsed() < within, "still running: {v}");
-        tokio::time::sleep(Duration::from_millis(50)).await;
-    }
 }
 
 /// Every dissection the API returns passes the core verifier.

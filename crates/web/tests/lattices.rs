@@ -2,48 +2,21 @@
 //! one (the page draws from it), and the shipped `tri3` and `hex` examples
 //! solve to verified dissections whose every download is made.
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
-use axum::body::Body;
-use axum::http::{Request, StatusCode};
+use axum::http::StatusCode;
 use axum::Router;
 use dissect_core::io::{parse_figure, parse_solution};
 use dissect_core::LatticeKind;
-use dissect_web::{router, Limits};
-use http_body_util::BodyExt;
 use serde_json::{json, Value};
-use tower::ServiceExt;
 
-fn app() -> Router {
-    router(Limits::new(200, 64, 4, 1, 60.0, 1))
-}
-
-async fn call(app: &Router, method: &str, uri: &str, body: &str) -> (StatusCode, Vec<u8>) {
-    let req = Request::builder()
-        .method(method)
-        .uri(uri)
-        .header("content-type", "application/json")
-        .body(Body::from(body.to_string()))
-        .unwrap();
-    let res = app.clone().oneshot(req).await.unwrap();
-    let status = res.status();
-    (
-        status,
-        res.into_body().collect().await.unwrap().to_bytes().to_vec(),
-    )
-}
-
-async fn call_json(app: &Router, method: &str, uri: &str, body: &str) -> (StatusCode, Value) {
-    let (s, b) = call(app, method, uri, body).await;
-    let v = serde_json::from_slice(&b)
-        .unwrap_or_else(|_| panic!("not JSON: {}", String::from_utf8_lossy(&b)));
-    (s, v)
-}
+mod common;
+use common::{app, call, call_raw, wait_done};
 
 #[tokio::test]
 async fn every_lattice_is_described_for_the_page() {
     let app = app();
-    let (s, v) = call_json(&app, "GET", "/api/lattices", "").await;
+    let (s, v) = call(&app, "GET", "/api/lattices", "").await;
     assert_eq!(s, StatusCode::OK);
     let names: Vec<&str> = v["lattices"]
         .as_array()
@@ -52,7 +25,7 @@ async fn every_lattice_is_described_for_the_page() {
         .map(|l| l["lattice"].as_str().unwrap())
         .collect();
     assert_eq!(names.len(), 5, "{names:?}");
-    let (_, info) = call_json(&app, "GET", "/api/info", "").await;
+    let (_, info) = call(&app, "GET", "/api/info", "").await;
     let mut listed: Vec<&str> = info["lattices"]
         .as_array()
         .unwrap()
@@ -64,7 +37,7 @@ async fn every_lattice_is_described_for_the_page() {
     described.sort();
     assert_eq!(listed, described);
     // Every shipped lattice has an example.
-    let (_, ex) = call_json(&app, "GET", "/api/examples", "").await;
+    let (_, ex) = call(&app, "GET", "/api/examples", "").await;
     for n in &names {
         assert!(
             ex.as_array().unwrap().iter().any(|e| e["lattice"] == *n),
@@ -75,23 +48,11 @@ async fn every_lattice_is_described_for_the_page() {
 
 async fn solve(app: &Router, lattice: &str, figures: &Value, time_limit: f64) -> Value {
     let body = json!({"lattice": lattice, "seed": 1, "time_limit": time_limit, "figures": figures});
-    let (s, v) = call_json(app, "POST", "/api/solve", &body.to_string()).await;
+    let (s, v) = call(app, "POST", "/api/solve", &body.to_string()).await;
     assert_eq!(s, StatusCode::ACCEPTED, "{v}");
-    let id = v["id"].as_u64().unwrap();
-    let start = Instant::now();
-    loop {
-        let (s, v) = call_json(app, "GET", &format!("/api/solve/{id}"), "").await;
-        assert_eq!(s, StatusCode::OK);
-        if v["state"] != "running" {
-            assert_eq!(v["state"], "done", "{v}");
-            return v["result"].clone();
-        }
-        assert!(
-            start.elapsed() < Duration::from_secs(90),
-            "still running: {v}"
-        );
-        tokio::time::sleep(Duration::from_millis(100)).await;
-    }
+    let v = wait_done(app, v["id"].as_u64().unwrap(), Duration::from_secs(90)).await;
+    assert_eq!(v["state"], "done", "{v}");
+    v["result"].clone()
 }
 
 /// The shipped tri3 and hex examples solve; the dissection passes the
@@ -99,8 +60,8 @@ async fn solve(app: &Router, lattice: &str, figures: &Value, time_limit: f64) ->
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn tri3_and_hex_examples_solve_and_every_download_is_made() {
     let app = app();
-    let (_, lattices) = call_json(&app, "GET", "/api/lattices", "").await;
-    let (_, examples) = call_json(&app, "GET", "/api/examples", "").await;
+    let (_, lattices) = call(&app, "GET", "/api/lattices", "").await;
+    let (_, examples) = call(&app, "GET", "/api/examples", "").await;
     for (lattice, kind) in [("tri3", LatticeKind::Tri3), ("hex", LatticeKind::Hex)] {
         let ex = examples
             .as_array()
@@ -145,7 +106,7 @@ async fn tri3_and_hex_examples_solve_and_every_download_is_made() {
             "animation",
             "ldraw",
         ] {
-            let (s, bytes) = call(&app, "POST", &format!("/api/export/{format}"), &body).await;
+            let (s, bytes) = call_raw(&app, "POST", &format!("/api/export/{format}"), &body).await;
             if made.contains(&format) {
                 assert_eq!(
                     s,
@@ -159,7 +120,7 @@ async fn tri3_and_hex_examples_solve_and_every_download_is_made() {
             }
         }
         assert!(!made.contains(&"ldraw") && made.contains(&"cut-sheet") && made.contains(&"html"));
-        let (_, anim) = call(&app, "POST", "/api/export/animation", &body).await;
+        let (_, anim) = call_raw(&app, "POST", "/api/export/animation", &body).await;
         let anim: Value = serde_json::from_slice(&anim).unwrap();
         assert_eq!(anim["lattice"], lattice);
         assert_eq!(anim["pieces"].as_array().unwrap().len(), n);

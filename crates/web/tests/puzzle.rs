@@ -7,60 +7,27 @@
 //! with the puzzle crate's `Constraints::check`.
 
 use std::collections::HashSet;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
-use axum::body::Body;
-use axum::http::{Request, StatusCode};
+use axum::http::StatusCode;
 use axum::Router;
 use dissect_core::io::{parse_figure, parse_solution};
 use dissect_core::{Figure, LatticeKind};
 use dissect_puzzle::scores::canonical;
 use dissect_puzzle::{Constraints, KeepRegions, Motions};
-use dissect_web::{router, Limits};
-use http_body_util::BodyExt;
 use serde_json::{json, Value};
-use tower::ServiceExt;
 
-/// 1 worker thread, 1 solve at a time, 200 cells.
-fn app() -> Router {
-    router(Limits::new(200, 64, 4, 1, 60.0, 1))
-}
-
-async fn call(app: &Router, method: &str, uri: &str, body: &str) -> (StatusCode, Value) {
-    let req = Request::builder()
-        .method(method)
-        .uri(uri)
-        .header("content-type", "application/json")
-        .body(Body::from(body.to_string()))
-        .unwrap();
-    let res = app.clone().oneshot(req).await.unwrap();
-    let status = res.status();
-    let bytes = res.into_body().collect().await.unwrap().to_bytes();
-    let v = serde_json::from_slice(&bytes)
-        .unwrap_or_else(|_| panic!("not JSON: {}", String::from_utf8_lossy(&bytes)));
-    (status, v)
-}
+mod common;
+use common::{app, call, wait_done};
 
 /// Starts a solve and waits for its end; the final snapshot.
 async fn solve(app: &Router, body: Value) -> Value {
     let (s, v) = call(app, "POST", "/api/solve", &body.to_string()).await;
     assert_eq!(s, StatusCode::ACCEPTED, "{body}: {v}");
-    let id = v["id"].as_u64().unwrap();
-    let start = Instant::now();
-    loop {
-        let (s, v) = call(app, "GET", &format!("/api/solve/{id}"), "").await;
-        assert_eq!(s, StatusCode::OK);
-        if v["state"] != "running" {
-            assert_eq!(v["state"], "done", "{v}");
-            assert_eq!(v["counting"], false, "{v}");
-            return v;
-        }
-        assert!(
-            start.elapsed() < Duration::from_secs(60),
-            "still running: {v}"
-        );
-        tokio::time::sleep(Duration::from_millis(50)).await;
-    }
+    let v = wait_done(app, v["id"].as_u64().unwrap(), Duration::from_secs(60)).await;
+    assert_eq!(v["state"], "done", "{v}");
+    assert_eq!(v["counting"], false, "{v}");
+    v
 }
 
 fn square(text: &str) -> Figure {
