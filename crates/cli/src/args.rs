@@ -172,7 +172,7 @@ pub struct SolveArgs {
     /// Exactly the paper's schedule: levels of 2, 3, ... pieces, stopping at the first level with a valid dissection.
     #[arg(long)]
     pub paper: bool,
-    /// Without --time-limit, end after this many rounds in a row that found no fewer pieces (with --solutions: at least 8, and a round that found a new solution counts as progress).
+    /// Without --time-limit, end after this many rounds in a row that found no fewer pieces (with --solutions: more of them, and a round that found a new solution counts as progress).
     #[arg(long, default_value_t = defaults().idle_rounds, value_name = "N")]
     pub rounds: usize,
     /// Write up to N different dissections with the fewest pieces: OUT.json (the best), OUT-2.json, ...
