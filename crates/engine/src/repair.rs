@@ -1,24 +1,48 @@
 //! The heuristic's repair hook, implemented by the exact local repair of
 //! `dissect-exact` (SAT over a neighbourhood of the mismatched cells, the
-//! rest of the candidate fixed).
+//! rest of the candidate fixed), and its exact dissection of small figures
+//! (the sectors of large ones) by the exact search.
 
-use std::sync::atomic::AtomicBool;
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 
 use dissect_core::solver::Repair;
 use dissect_core::{Cell, Figure};
-use dissect_exact::{repair, RepairOptions};
+use dissect_exact::{repair, search, ExactOptions, Mode, RepairOptions};
+use dissect_puzzle::Constraints;
+
+use crate::run::SLIVER_CELLS;
+
+/// SAT conflicts for one exact dissection of small figures (each of its
+/// two searches), so that it ends the same way on every machine.
+pub const DISSECT_BUDGET: u64 = 4_000;
+
+/// SAT conflicts for all the exact dissections of small figures of one
+/// run: the sectors of a run cost at most a few seconds.
+pub const DISSECT_TOTAL_BUDGET: u64 = 16_000;
+
+/// Conflicts of each restricted-motion pass of those searches.
+const DISSECT_PASS_BUDGET: u64 = 1_000;
+
+/// The memory one of those encodings may take.
+const DISSECT_MAX_ENCODING_BYTES: u64 = 32 << 20;
 
 /// [`Repair`] by [`dissect_exact::repair()`] with a deterministic budget (SAT
 /// conflicts); a deadline only when the run has a time limit.
 pub struct ExactRepair<'a> {
     figures: &'a [Figure],
     options: RepairOptions,
+    /// Conflicts spent so far by [`Repair::dissect`].
+    spent: AtomicU64,
 }
 
 impl<'a> ExactRepair<'a> {
     /// The repairer of near misses of `figures` with these options.
     pub fn new(figures: &'a [Figure], options: RepairOptions) -> ExactRepair<'a> {
-        ExactRepair { figures, options }
+        ExactRepair {
+            figures,
+            options,
+            spent: AtomicU64::new(0),
+        }
     }
 }
 
@@ -29,5 +53,53 @@ impl Repair for ExactRepair<'_> {
         repair(self.figures, pieces, &self.options, stop)
             .ok()
             .flatten()
+    }
+
+    /// The exact search ([`Mode::Minimum`], at most `max_pieces` pieces,
+    /// [`DISSECT_BUDGET`] conflicts); when its answer has a piece of fewer
+    /// than [`SLIVER_CELLS`] cells, again with that as `--min-piece` and no
+    /// more pieces. All these searches of one run share
+    /// [`DISSECT_TOTAL_BUDGET`] conflicts.
+    fn dissect(
+        &self,
+        figures: &[Vec<Cell>],
+        max_pieces: usize,
+        stop: &AtomicBool,
+    ) -> Option<Vec<Vec<Vec<Cell>>>> {
+        let lattice = self.figures.first()?.lattice();
+        let figures: Vec<Figure> = figures
+            .iter()
+            .map(|cells| Figure::new(lattice, cells.iter().copied()))
+            .collect::<Result<_, _>>()
+            .ok()?;
+        let minimum = |max_pieces: usize, constraints: Option<Constraints>| {
+            let left = DISSECT_TOTAL_BUDGET.checked_sub(self.spent.load(Ordering::SeqCst))?;
+            if left == 0 {
+                return None;
+            }
+            let options = ExactOptions {
+                mirror: self.options.mirror,
+                mode: Mode::Minimum,
+                deadline: self.options.deadline,
+                max_pieces: Some(max_pieces),
+                conflict_budget: Some(left.min(DISSECT_BUDGET)),
+                restricted_conflicts: Some(DISSECT_PASS_BUDGET),
+                max_encoding_bytes: DISSECT_MAX_ENCODING_BYTES,
+                constraints,
+                ..ExactOptions::default()
+            };
+            let upper = AtomicUsize::new(usize::MAX);
+            let outcome = search(&figures, &options, stop, &upper, &()).ok()?;
+            self.spent.fetch_add(outcome.conflicts, Ordering::SeqCst);
+            outcome.found
+        };
+        let first = minimum(max_pieces, None)?;
+        let k = first[0].len();
+        let small = first[0].iter().any(|p| p.len() < SLIVER_CELLS);
+        if !small || figures[0].len() < SLIVER_CELLS * k {
+            return Some(first);
+        }
+        let sized = Constraints::none().with_sizes(Some(SLIVER_CELLS), None);
+        Some(minimum(k, Some(sized)).unwrap_or(first))
     }
 }

@@ -19,10 +19,12 @@ pub enum Source {
     Sat,
     /// The level search on the figures at half resolution, lifted.
     Coarse,
+    /// One large common piece, the rest dissected exactly sector by sector.
+    Sectors,
 }
 
 impl Source {
-    /// `greedy`, `search`, `repair`, `sat` or `coarse`.
+    /// `greedy`, `search`, `repair`, `sat`, `coarse` or `sectors`.
     pub fn name(self) -> &'static str {
         match self {
             Source::Greedy => "greedy",
@@ -30,6 +32,7 @@ impl Source {
             Source::Repair => "repair",
             Source::Sat => "sat",
             Source::Coarse => "coarse",
+            Source::Sectors => "sectors",
         }
     }
 }

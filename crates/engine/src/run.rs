@@ -227,6 +227,7 @@ impl Observer for Shared<'_> {
                     Via::Greedy => Source::Greedy,
                     Via::Repair => Source::Repair,
                     Via::Coarse => Source::Coarse,
+                    Via::Sectors => Source::Sectors,
                     _ => Source::Search,
                 },
             ),

@@ -286,3 +286,59 @@ fn exact_alone_finds_and_proves_a_minimum() {
     assert_eq!(r.best.unwrap().piece_count(), 2);
     assert!(r.optimal);
 }
+
+/// A sector of a rasterized disc (two strips of its rim) and the corner of
+/// a square they fill: the exact dissection of small figures finds the
+/// fewest pieces (4), and at that count none of fewer than three cells,
+/// though the exact search's own first minimum has such a piece.
+#[test]
+fn small_figures_are_dissected_exactly_without_slivers() {
+    let figures = [
+        square(&[
+            "...................##",
+            "...................##",
+            "...................##",
+            "...................##",
+            "...................##",
+            "...................##",
+            "...................#.",
+            "...................#.",
+            "#########............",
+            "#######..............",
+        ]),
+        square(&[
+            ".......#", ".......#", "......##", ".....###", "....####", "...#####", "..######",
+            "########",
+        ]),
+    ];
+    let options = dissect_exact::ExactOptions {
+        mode: dissect_exact::Mode::Minimum,
+        ..dissect_exact::ExactOptions::default()
+    };
+    let upper = std::sync::atomic::AtomicUsize::new(usize::MAX);
+    let plain = dissect_exact::search(&figures, &options, &AtomicBool::new(false), &upper, &())
+        .unwrap()
+        .found
+        .expect("a minimum");
+    assert_eq!(plain[0].len(), 4);
+    assert!(
+        plain[0]
+            .iter()
+            .any(|p| p.len() < dissect_engine::SLIVER_CELLS),
+        "the plain minimum has a sliver (else this test shows nothing)"
+    );
+    let repairer = ExactRepair::new(&figures, RepairOptions::default());
+    let cells: Vec<Vec<Cell>> = figures.iter().map(|f| f.cells().to_vec()).collect();
+    let pieces = repairer
+        .dissect(&cells, 4, &AtomicBool::new(false))
+        .expect("a dissection");
+    assert_eq!(
+        verify_pieces(LatticeKind::Square, true, &figures, &pieces),
+        Ok(4)
+    );
+    let sizes: Vec<usize> = pieces[0].iter().map(Vec::len).collect();
+    assert!(
+        sizes.iter().all(|&n| n >= dissect_engine::SLIVER_CELLS),
+        "{sizes:?}"
+    );
+}

@@ -33,6 +33,46 @@ fn the_readme_example_is_optimal_with_bound_and_history() {
     );
 }
 
+/// A rasterized disc to a square (1,369 cells): the constructive
+/// dissection leaves pieces of one cell along the rim; the sectors (one
+/// large common piece, the rim dissected exactly sector by sector) give
+/// fewer pieces within a second or so, none of fewer than three cells.
+#[test]
+fn a_disc_to_a_square_has_no_sliver() {
+    let sb = Sandbox::new();
+    let a = sb.copy_instance("disc21-to-square37", "a.txt", "a.txt");
+    let b = sb.copy_instance("disc21-to-square37", "b.txt", "b.txt");
+    let run = sb.run(&[
+        "solve",
+        "--seed",
+        "1",
+        "--time-limit",
+        "12",
+        "-o",
+        "out.json",
+        &a,
+        &b,
+    ]);
+    run.expect_code(0);
+    let n = assert_valid(&sb, "square", "out.json", &[&a, &b]);
+    let sol = json(&sb.read("out.json"));
+    let history = sol["history"].as_array().expect("history");
+    let first = history[0]["pieces"].as_u64().expect("pieces") as usize;
+    assert!(
+        history.iter().any(|h| h["by"] == "sectors"),
+        "{}",
+        run.stderr
+    );
+    assert!(n < first && n <= 17, "{n} pieces after {first}");
+    let areas: Vec<u64> = sol["areas"]
+        .as_array()
+        .expect("areas")
+        .iter()
+        .map(|a| a.as_u64().expect("area"))
+        .collect();
+    assert!(areas.iter().all(|&a| a >= 3), "{areas:?}");
+}
+
 #[test]
 fn improvements_never_raise_the_piece_count() {
     let sb = Sandbox::new();

@@ -12,7 +12,7 @@ use crate::solver::explore::Executor;
 use crate::solver::incumbent::Incumbent;
 use crate::solver::plateau::{plateau_descents, plateau_walk};
 use crate::solver::search::{From, Level, Search};
-use crate::solver::{coarse, greedy};
+use crate::solver::{coarse, greedy, sectors};
 use crate::solver::{Event, Observer, Options, Outcome, Repair, SolveError, Via};
 
 /// Levels climbed at full resolution from a lifted coarse candidate.
@@ -91,6 +91,9 @@ pub fn solve_anytime_with(
     }
     let mut run = Run::new(&search, anytime, repair, s0.mismatch);
     run.constructive();
+    if !search.stopped() {
+        run.sectors();
+    }
     // Large figures: the level search costs about the same per level at
     // any resolution, so it runs on the figures at half resolution (halved
     // again while they are large); the coarse dissection is lifted, refined
@@ -212,6 +215,44 @@ impl<'r, 'a> Run<'r, 'a> {
         }
     }
 
+    /// The sector dissection ([`sectors`]): the large common piece with
+    /// each figure as the frame, and every sector of what is left dissected
+    /// exactly by the repair hook; each with fewer pieces than the best is
+    /// an improvement.
+    fn sectors(&mut self) {
+        let Some(repairer) = self.repair else {
+            return;
+        };
+        let search = self.search;
+        let mut tried: Vec<sectors::Plan> = Vec::new();
+        for pivot in 0..search.figures.len() {
+            if search.stopped() {
+                break;
+            }
+            for plan in sectors::plans(&search.problem, pivot) {
+                // Another frame often gives the same sectors.
+                if search.stopped() || tried.contains(&plan) {
+                    continue;
+                }
+                tried.push(plan.clone());
+                // Fewer pieces than the best so far, within the cap.
+                let most = self
+                    .inc
+                    .pieces()
+                    .map_or(self.max_pieces, |k| k - 1)
+                    .min(self.max_pieces);
+                let Some(pieces) =
+                    sectors::dissect(search.figures, &plan, most, repairer, search.stop)
+                else {
+                    continue;
+                };
+                if let Some((c, s)) = search.candidate_of(&pieces) {
+                    let level = c.k - 1;
+                    self.inc.improve(search, c, s, level, 0, Via::Sectors);
+                }
+            }
+        }
+    }
     /// The coarse step (round 0 of large figures): the anytime search on
     /// the figures at lower resolution, lifted ([`Run::lift`]), then, when
     /// the lift is close to a dissection, the climb ([`Run::climb`]).

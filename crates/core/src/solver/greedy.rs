@@ -31,28 +31,11 @@ pub(crate) fn greedy(problem: &Problem, style: GreedyStyle) -> Candidate {
     let nf = shapes.len();
     let pivot = style.pivot.min(nf - 1);
     let n = shapes[0].len();
-    const FREE: u16 = u16::MAX;
     let mut labels: Vec<Vec<u16>> = shapes.iter().map(|s| vec![FREE; s.len()]).collect();
     let mut left = n;
     let mut k: u16 = 0;
     while left > 0 {
-        // The pivot cells still free; narrowed figure by figure to those
-        // whose image under the chosen motion is free there too.
-        let mut common: Vec<u32> = (0..n as u32)
-            .filter(|&c| labels[pivot][c as usize] == FREE)
-            .collect();
-        let mut motions: Vec<Option<(usize, Point)>> = vec![None; nf];
-        for f in (0..nf).filter(|&f| f != pivot) {
-            let (s, t) = best_motion(problem, pivot, &common, f, &labels[f]);
-            let sym = problem.geo.syms[s];
-            common.retain(|&c| {
-                let p = sym.apply(shapes[pivot].point(c));
-                shapes[f]
-                    .lookup(p + t)
-                    .is_some_and(|j| labels[f][j as usize] == FREE)
-            });
-            motions[f] = Some((s, t));
-        }
+        let (common, motions) = common_part(problem, pivot, &labels);
         debug_assert!(!common.is_empty(), "a single cell always fits");
         let comps = components(&shapes[pivot], &common);
         let largest = comps.iter().map(Vec::len).max().unwrap_or(0);
@@ -77,6 +60,37 @@ pub(crate) fn greedy(problem: &Problem, style: GreedyStyle) -> Candidate {
         k: k as usize,
     }
 }
+
+/// The pivot's free cells whose images are free in every other figure
+/// under the motions (one per other figure, `None` for the pivot) that keep
+/// the most of them, chosen figure by figure.
+pub(crate) fn common_part(
+    problem: &Problem,
+    pivot: usize,
+    labels: &[Vec<u16>],
+) -> (Vec<u32>, Vec<Option<(usize, Point)>>) {
+    let shapes = &problem.shapes;
+    let nf = shapes.len();
+    let mut common: Vec<u32> = (0..shapes[pivot].len() as u32)
+        .filter(|&c| labels[pivot][c as usize] == FREE)
+        .collect();
+    let mut motions: Vec<Option<(usize, Point)>> = vec![None; nf];
+    for f in (0..nf).filter(|&f| f != pivot) {
+        let (s, t) = best_motion(problem, pivot, &common, f, &labels[f]);
+        let sym = problem.geo.syms[s];
+        common.retain(|&c| {
+            let p = sym.apply(shapes[pivot].point(c));
+            shapes[f]
+                .lookup(p + t)
+                .is_some_and(|j| labels[f][j as usize] == FREE)
+        });
+        motions[f] = Some((s, t));
+    }
+    (common, motions)
+}
+
+/// The label of a cell no piece holds yet.
+pub(crate) const FREE: u16 = u16::MAX;
 
 /// Cell pairs that vote for translations in one symmetry, at most.
 const VOTE_PAIRS: usize = 1 << 22;
@@ -172,7 +186,7 @@ fn bounds(points: &[Point]) -> (Point, Point) {
 
 /// The connected components of `cells` in `shape`, each sorted, in order of
 /// their smallest cell.
-fn components(shape: &Shape, cells: &[u32]) -> Vec<Vec<u32>> {
+pub(crate) fn components(shape: &Shape, cells: &[u32]) -> Vec<Vec<u32>> {
     let mut inside = vec![false; shape.len()];
     for &c in cells {
         inside[c as usize] = true;

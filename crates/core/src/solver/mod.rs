@@ -29,6 +29,7 @@ pub(crate) mod piece;
 mod plateau;
 pub(crate) mod refine;
 mod search;
+pub(crate) mod sectors;
 pub(crate) mod shape;
 
 use std::sync::atomic::AtomicBool;
@@ -127,16 +128,19 @@ pub enum Via {
     Repair,
     /// A dissection of the figures at half resolution, lifted and refined.
     Coarse,
+    /// One large common piece, the rest dissected exactly sector by sector.
+    Sectors,
 }
 
 impl Via {
-    /// A short name: `greedy`, `search`, `repair`, `coarse`.
+    /// A short name: `greedy`, `search`, `repair`, `coarse`, `sectors`.
     pub fn name(self) -> &'static str {
         match self {
             Via::Greedy => "greedy",
             Via::Search => "search",
             Via::Repair => "repair",
             Via::Coarse => "coarse",
+            Via::Sectors => "sectors",
         }
     }
 }
@@ -325,4 +329,21 @@ pub trait Repair: Sync {
     /// whose pieces nearly match (labels aligned to figure 0). The answer
     /// has the same shape. Raising `stop` should end the repair soon.
     fn repair(&self, pieces: &[Vec<Vec<Cell>>], stop: &AtomicBool) -> Option<Vec<Vec<Vec<Cell>>>>;
+
+    /// An exact dissection of small figures (`figures[f]`: the cells of
+    /// figure `f`, equal in number; they need not be connected) with at
+    /// most `max_pieces` pieces, as few as the hook can find, and among
+    /// those none of fewer than three cells when that is possible:
+    /// `pieces[f][i]`, or `None` when it finds none within its budget. Used
+    /// for the sectors of large figures (one large common piece aside). The
+    /// default finds none.
+    fn dissect(
+        &self,
+        figures: &[Vec<Cell>],
+        max_pieces: usize,
+        stop: &AtomicBool,
+    ) -> Option<Vec<Vec<Vec<Cell>>>> {
+        let _ = (figures, max_pieces, stop);
+        None
+    }
 }

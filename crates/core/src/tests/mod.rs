@@ -10,5 +10,6 @@ mod levels;
 mod matching;
 mod multi_figure;
 mod refine;
+mod sectors;
 mod shape;
 mod util;
