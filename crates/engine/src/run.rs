@@ -36,6 +36,13 @@ const EXACT_MAX_BYTES: u64 = 256 << 20;
 /// How long a stopped run waits for the exact side to return.
 const EXACT_GRACE: Duration = Duration::from_millis(300);
 
+/// With a time limit, the share of it at its end that goes to the polish
+/// when the answer has a sliver.
+pub const POLISH_SHARE: f64 = 0.15;
+
+/// No polish within a time limit shorter than this share leaves.
+const POLISH_LEAST: Duration = Duration::from_millis(500);
+
 /// SAT conflicts one repair of a near miss may spend (deterministic work).
 pub const REPAIR_BUDGET: u64 = 4_000;
 
@@ -152,6 +159,8 @@ struct Shared<'a> {
     /// The best piece count of each side (`usize::MAX`: none yet).
     heuristic_best: AtomicUsize,
     sat_best: AtomicUsize,
+    /// The cells of the smallest piece of the heuristic's best.
+    heuristic_smallest: AtomicUsize,
     /// The best piece count known to either side, for the exact search.
     upper: Arc<AtomicUsize>,
     lower: Mutex<LowerBound>,
@@ -191,6 +200,15 @@ impl Shared<'_> {
         self.observer.on_event(&EngineEvent::Improved(improvement));
     }
 
+    /// [`Shared::found`] for the heuristic's dissection, whose smallest
+    /// piece has `smallest` cells.
+    fn found_by_heuristic(&self, pieces: usize, smallest: usize, source: Source) {
+        if pieces <= self.heuristic_best.load(Ordering::SeqCst) {
+            self.heuristic_smallest.store(smallest, Ordering::SeqCst);
+        }
+        self.found(pieces, source);
+    }
+
     fn raise_lower(&self, value: usize, reason: impl FnOnce() -> (String, String)) {
         let bound = {
             let mut l = self.lower.lock().unwrap_or_else(|e| e.into_inner());
@@ -221,8 +239,14 @@ impl Observer for Shared<'_> {
                 let r = "the figures are not congruent".to_string();
                 (r.clone(), r)
             }),
-            Event::Improved { pieces, via, .. } => self.found(
+            Event::Improved {
+                pieces,
+                smallest,
+                via,
+                ..
+            } => self.found_by_heuristic(
                 *pieces,
+                *smallest,
                 match via {
                     Via::Greedy => Source::Greedy,
                     Via::Repair => Source::Repair,
@@ -372,6 +396,7 @@ pub fn run_with(
         observer,
         heuristic_best: AtomicUsize::new(usize::MAX),
         sat_best: AtomicUsize::new(usize::MAX),
+        heuristic_smallest: AtomicUsize::new(usize::MAX),
         upper: Arc::new(AtomicUsize::new(usize::MAX)),
         lower: Mutex::new(LowerBound {
             value: 1,
@@ -450,6 +475,17 @@ pub fn run_with(
             ExactObserver::on_event(&shared, &e);
         }
     };
+    // The polish (below) of an answer with a sliver: figures it can take,
+    // and with a time limit the instant from which it takes over.
+    let polishable = strategy == Strategy::Anytime
+        && shared.judge.is_none()
+        && figures[0].len() <= PROVE_MAX_CELLS;
+    let polish_from = options
+        .time_limit()
+        .map(|t| t.mul_f64(POLISH_SHARE))
+        .filter(|r| polishable && *r >= POLISH_LEAST)
+        .and_then(|r| deadline.map(|d| d - r));
+    let mut polish_early = false;
     let mut end = End::Finished;
     let heuristic = std::thread::scope(|s| {
         let heuristic = heuristic_on.then(|| {
@@ -480,6 +516,18 @@ pub fn run_with(
             }
             if deadline.is_some_and(|d| Instant::now() >= d) {
                 end = End::TimeLimit;
+                break;
+            }
+            // The last part of a time limit goes to the polish when the
+            // heuristic's answer (the better one) has a sliver.
+            if polish_from.is_some_and(|t| Instant::now() >= t)
+                && shared.heuristic_smallest.load(Ordering::SeqCst) < SLIVER_CELLS
+                && shared.heuristic_best.load(Ordering::SeqCst)
+                    <= shared.sat_best.load(Ordering::SeqCst)
+                && !heuristic_done.load(Ordering::SeqCst)
+            {
+                end = End::TimeLimit;
+                polish_early = true;
                 break;
             }
             let lower = shared.lower_value.load(Ordering::SeqCst);
@@ -535,7 +583,8 @@ pub fn run_with(
     let mut heuristic: Option<Outcome> = heuristic.transpose()?;
     // Polish: an answer with a sliver (a piece of fewer than SLIVER_CELLS
     // cells) gets one more round of the search at its piece count that
-    // accepts only sliver-free dissections, in the time left.
+    // accepts only sliver-free dissections, in the time left (with a time
+    // limit, its last POLISH_SHARE).
     let sat_count = shared.sat_best.load(Ordering::SeqCst);
     let sliver_count = heuristic
         .as_ref()
@@ -543,10 +592,8 @@ pub fn run_with(
         .filter(|f| f.piece_count() <= sat_count && has_sliver(&f.pieces))
         .map(|f| f.piece_count());
     if let Some(count) = sliver_count.filter(|_| {
-        strategy == Strategy::Anytime
-            && shared.judge.is_none()
-            && figures[0].len() <= PROVE_MAX_CELLS
-            && matches!(end, End::Optimal | End::Finished)
+        polishable
+            && (polish_early || matches!(end, End::Optimal | End::Finished))
             && !stop.load(Ordering::SeqCst)
             && deadline.is_none_or(|d| Instant::now() < d)
     }) {
@@ -554,9 +601,12 @@ pub fn run_with(
             max_pieces: Some(count),
             ..solver_options.clone()
         };
+        // One round after an optimal or finished run; in the last part of
+        // a time limit, rounds until it.
+        let rounds = (!polish_early).then_some(1);
         let polish_anytime = dissect_core::solver::Anytime {
-            idle_rounds: Some(1),
-            max_rounds: Some(1),
+            idle_rounds: rounds,
+            max_rounds: rounds,
             ..anytime.clone()
         };
         let polish_stop = AtomicBool::new(false);

@@ -342,3 +342,34 @@ fn small_figures_are_dissected_exactly_without_slivers() {
         "{sizes:?}"
     );
 }
+
+/// The 3×3 and 4×4 squares into a 5×5 square within a time limit and
+/// without the proof, so that only the limit ends the run: the constructive
+/// answer (4 pieces, two of 2 cells) cannot be beaten, and the last part of
+/// the time goes to the polish, which finds 4 pieces without a sliver.
+#[test]
+fn a_sliver_answer_is_polished_within_the_time_limit() {
+    let figures = [
+        square(&["####..###", "####..###", "####..###", "####....."]),
+        square(&["#####", "#####", "#####", "#####", "#####"]),
+    ];
+    let names = vec!["a".to_string(), "b".to_string()];
+    let options = RunOptions::new(RunConfig {
+        prove: false,
+        time_limit: Some(8.0),
+        ..RunConfig::default()
+    })
+    .unwrap();
+    let report = run(&figures, &names, &options, &AtomicBool::new(false), &()).unwrap();
+    assert_eq!(report.end, End::TimeLimit);
+    let best = report.best.as_ref().expect("a dissection");
+    assert_eq!(
+        verify_pieces(LatticeKind::Square, true, &figures, best.pieces()),
+        Ok(4)
+    );
+    let sizes: Vec<usize> = best.pieces()[0].iter().map(Vec::len).collect();
+    assert!(
+        sizes.iter().all(|&n| n >= dissect_engine::SLIVER_CELLS),
+        "no sliver: {sizes:?}"
+    );
+}

@@ -131,6 +131,7 @@ fn congruent(search: &Search<'_>, whole: &Candidate, s0: &Score) -> Outcome {
     let found = search.found(whole, s0, 0);
     search.observer.on_event(&Event::Improved {
         pieces: 1,
+        smallest: search.figures[0].len(),
         level: 0,
         round: 0,
         via: Via::Search,

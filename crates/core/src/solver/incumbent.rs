@@ -53,6 +53,7 @@ impl Incumbent {
         let cand = search.candidate_of(&found.pieces).map_or(cand, |(c, _)| c);
         search.observer.on_event(&Event::Improved {
             pieces,
+            smallest: found.smallest(),
             level,
             round,
             via,

@@ -107,6 +107,8 @@ pub enum Event {
     Improved {
         /// Its piece count.
         pieces: usize,
+        /// The cells of its smallest piece.
+        smallest: usize,
         /// The level it was found at.
         level: usize,
         /// The round.
@@ -215,6 +217,14 @@ impl Found {
     /// The number of pieces.
     pub fn piece_count(&self) -> usize {
         self.pieces.first().map_or(0, |p| p.len())
+    }
+
+    /// The cells of the smallest piece (0 for none).
+    pub fn smallest(&self) -> usize {
+        self.pieces
+            .first()
+            .and_then(|p| p.iter().map(Vec::len).min())
+            .unwrap_or(0)
     }
 
     /// The area of each piece.

@@ -40,6 +40,7 @@ pub fn solve_with(
     if s0.valid {
         observer.on_event(&Event::Improved {
             pieces: 1,
+            smallest: figures[0].len(),
             level: 0,
             round: 0,
             via: Via::Search,
@@ -78,6 +79,7 @@ pub fn solve_with(
             let found = search.found(cand, score, level);
             observer.on_event(&Event::Improved {
                 pieces: found.piece_count(),
+                smallest: found.smallest(),
                 level,
                 round: 0,
                 via: Via::Search,
