@@ -14,11 +14,11 @@ use crate::run::SLIVER_CELLS;
 
 /// SAT conflicts for one exact dissection of small figures (each of its
 /// two searches), so that it ends the same way on every machine.
-pub const DISSECT_BUDGET: u64 = 4_000;
+const DISSECT_BUDGET: u64 = 4_000;
 
 /// SAT conflicts for all the exact dissections of small figures of one
 /// run: the sectors of a run cost at most a few seconds.
-pub const DISSECT_TOTAL_BUDGET: u64 = 16_000;
+const DISSECT_TOTAL_BUDGET: u64 = 16_000;
 
 /// Conflicts of each restricted-motion pass of those searches.
 const DISSECT_PASS_BUDGET: u64 = 1_000;
@@ -56,10 +56,9 @@ impl Repair for ExactRepair<'_> {
     }
 
     /// The exact search ([`Mode::Minimum`], at most `max_pieces` pieces,
-    /// [`DISSECT_BUDGET`] conflicts); when its answer has a piece of fewer
-    /// than [`SLIVER_CELLS`] cells, again with that as `--min-piece` and no
-    /// more pieces. All these searches of one run share
-    /// [`DISSECT_TOTAL_BUDGET`] conflicts.
+    /// 4,000 conflicts); when its answer has a piece of fewer than
+    /// [`SLIVER_CELLS`] cells, again with that as `--min-piece` and no more
+    /// pieces. All these searches of one run share 16,000 conflicts.
     fn dissect(
         &self,
         figures: &[Vec<Cell>],
