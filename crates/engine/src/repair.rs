@@ -26,8 +26,11 @@ const DISSECT_PASS_BUDGET: u64 = 1_000;
 /// The memory one of those encodings may take.
 const DISSECT_MAX_ENCODING_BYTES: u64 = 32 << 20;
 
-/// [`Repair`] by [`dissect_exact::repair()`] with a deterministic budget (SAT
-/// conflicts); a deadline only when the run has a time limit.
+/// [`Repair`] by [`dissect_exact::repair()`] (near misses) and
+/// [`dissect_exact::search()`] (small figures: the sectors), each with a
+/// deterministic budget of SAT conflicts; a deadline only when the run has a
+/// time limit. The small figures' budget is one per repairer, so one run's
+/// searches (its coarse run and its polish included) share it.
 pub struct ExactRepair<'a> {
     figures: &'a [Figure],
     options: RepairOptions,

@@ -46,7 +46,7 @@ pub(crate) struct Plan {
 
 /// Cut sets tried per frame: the balanced values whose cuts pass through
 /// the widest angular gaps between leftover cells.
-pub(crate) const PLANS: usize = 3;
+const PLANS: usize = 3;
 
 /// Plans with figure `pivot` as the frame (at most [`PLANS`], the most
 /// promising first); none when the figures share no piece that leaves
