@@ -28,6 +28,7 @@
 //! prints.
 
 mod limits;
+mod monitor;
 mod options;
 mod repair;
 mod report;
