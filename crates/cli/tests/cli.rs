@@ -23,6 +23,8 @@ mod exit_codes;
 mod hostile;
 #[path = "cli/info.rs"]
 mod info;
+#[path = "cli/limits.rs"]
+mod limits;
 #[path = "cli/output.rs"]
 mod output;
 #[path = "cli/reproducibility.rs"]
