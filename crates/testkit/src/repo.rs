@@ -15,7 +15,12 @@ use std::sync::Once;
 
 /// The repository's root folder.
 pub fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    let testkit = Path::new(env!("CARGO_MANIFEST_DIR"));
+    // crates/testkit → the repository.
+    testkit
+        .ancestors()
+        .nth(2)
+        .map_or_else(|| testkit.join("../.."), Path::to_path_buf)
 }
 
 /// The benchmark instances: `instances/` (with its `manifest.json`).
@@ -41,7 +46,10 @@ pub fn instance_file(name: &str, file: &str) -> PathBuf {
 pub fn verify_py() -> Option<PathBuf> {
     let path = match std::env::var_os("DISSECT_VERIFY") {
         Some(p) => PathBuf::from(p),
-        None => root().join("../shared/tools/verify.py"),
+        None => root()
+            .parent()
+            .map_or_else(|| root().join(".."), Path::to_path_buf)
+            .join("shared/tools/verify.py"),
     };
     if path.is_file() {
         return Some(path);

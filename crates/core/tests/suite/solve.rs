@@ -3,8 +3,7 @@
 //! independent checkers as well (`tools/check_solution.py`, and the external
 //! `verify.py` when present).
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
