@@ -267,3 +267,44 @@ fn the_function_scan_measures_bodies() {
         ]
     );
 }
+
+/// The engine owns every long operation: the front ends (CLI, studio,
+/// bench, Python) never set up the exact search or call the assembly
+/// counter themselves; they call `dissect_engine::{run, bound,
+/// assemblies}`.
+#[test]
+fn the_front_ends_leave_long_operations_to_the_engine() {
+    let words = [
+        "ExactOptions",
+        "dissect_exact::search",
+        "search(&",
+        "assemblies::count",
+        "assemblies::{count",
+        "CountLimits",
+        "RepairOptions",
+    ];
+    let mut found = Vec::new();
+    for dir in ["cli/src", "web/src", "bench/src", "../python/src"] {
+        for (path, text) in sources(&crates().join(dir)) {
+            for line in uses(&text, &words) {
+                found.push(format!("{}: {line}", path.display()));
+            }
+        }
+    }
+    assert!(found.is_empty(), "{}", found.join("\n"));
+}
+
+/// One Ctrl-C handler: the CLI's `stop` module.
+#[test]
+fn one_module_catches_ctrl_c() {
+    let mut found = Vec::new();
+    for (path, text) in sources(&crates().join("cli/src")) {
+        if !uses(&text, &["ctrlc::"]).is_empty() && !path.ends_with("stop.rs") {
+            found.push(path.display().to_string());
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "Ctrl-C handlers outside stop.rs: {found:?}"
+    );
+}
