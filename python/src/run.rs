@@ -86,13 +86,6 @@ pub(crate) fn watched<T: Send>(
     Ok(Watched { value, interrupted })
 }
 
-/// The instant `seconds` from now; None for no limit (None, infinity, or
-/// more than a duration holds). Errors on NaN or negative values (the
-/// engine's [`TimeLimit`] rule, in Python's words).
-pub(crate) fn deadline(seconds: Option<f64>) -> Result<Option<Instant>, String> {
-    time_limit(seconds).map(TimeLimit::deadline)
-}
-
 /// `time_limit=` by the engine's [`TimeLimit`] rule; the error in Python's
 /// words (`time_limit must be ...`).
 pub(crate) fn time_limit(seconds: Option<f64>) -> Result<TimeLimit, String> {

@@ -1,20 +1,19 @@
 //! `solve`, `bound`, `verify` and the solution JSON writer.
 
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 
 use dissect_core::io::parse_solution;
 use dissect_core::solver::{self, Batch, Executor, Exploration};
 use dissect_core::Dissection;
 use dissect_core::{Figure, LatticeKind};
-use dissect_engine::{End, EngineError, RunConfig, RunOptions, Strategy};
-use dissect_exact::{ExactOptions, Mode};
+use dissect_engine::{BoundConfig, End, EngineError, RunConfig, RunOptions, Strategy};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
 use crate::errors::{error, Kind};
 use crate::figure::{cells_to_py, PyFigure};
-use crate::run::{deadline, watched};
+use crate::run::watched;
 
 /// The options `solve` takes as keywords: `dissect solve`'s flags
 /// (`no_mirror` is `mirror=False`, `no_prove` is `prove=False`).
@@ -431,35 +430,32 @@ pub(crate) fn bound<'py>(
     let (figs, names) = problem(py, &figures)?;
     let lattice = figs[0].lattice();
     let mirror = mirror && lattice.lattice().supports_mirror();
-    let deadline = deadline(time_limit).map_err(|m| error(py, Kind::Option, m))?;
-    let options = ExactOptions {
+    let config = BoundConfig {
         mirror,
-        mode: Mode::LowerBound,
-        deadline,
         max_pieces,
-        ..ExactOptions::default()
+        time_limit: crate::run::time_limit(time_limit).map_err(|m| error(py, Kind::Option, m))?,
     };
+    // The engine keeps the time limit; the watcher raises `stop` on Ctrl-C.
     let stop = AtomicBool::new(false);
-    let upper = AtomicUsize::new(usize::MAX);
-    let run = watched(py, &stop, deadline, || {
-        dissect_exact::search(&figs, &options, &stop, &upper, &())
+    let run = watched(py, &stop, None, || {
+        dissect_engine::bound(&figs, &names, &config, &stop, &())
     })?;
-    let outcome = run
+    let report = run
         .value
         .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
     let out = PyDict::new(py);
-    out.set_item("value", outcome.lower_bound.value)?;
-    out.set_item("reason", outcome.lower_bound.describe(&names))?;
+    out.set_item("value", report.lower_bound.value)?;
+    out.set_item("reason", report.lower_bound.reason.clone())?;
     out.set_item(
         "stopped",
-        outcome.stopped || run.interrupted.is_some() || stop.load(Ordering::SeqCst),
+        report.stopped() || run.interrupted.is_some() || stop.load(Ordering::SeqCst),
     )?;
     out.set_item("interrupted", run.interrupted.is_some())?;
     out.set_item("lattice", lattice.name())?;
     out.set_item("mirror", mirror)?;
     out.set_item("names", names)?;
-    match &outcome.found {
-        Some(p) => out.set_item("pieces", pieces_to_py(py, lattice, p)?)?,
+    match &report.found {
+        Some(v) => out.set_item("pieces", pieces_to_py(py, lattice, v.pieces())?)?,
         None => out.set_item("pieces", py.None())?,
     }
     Ok(out)

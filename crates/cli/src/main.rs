@@ -12,6 +12,7 @@ mod render;
 #[cfg(feature = "serve")]
 mod serve;
 mod solve;
+mod stop;
 mod verify;
 
 use std::process::ExitCode;

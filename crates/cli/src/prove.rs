@@ -1,19 +1,15 @@
-//! `dissect bound`: the exact mode of the `dissect-exact` crate, and the
+//! `dissect bound`: the engine's bound ([`dissect_engine::bound`]), and the
 //! lines that show the exact search's progress on stderr.
 
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Instant;
 
 use anyhow::Result;
 use dissect_core::LatticeKind;
-use dissect_engine::TimeLimit;
-use dissect_exact::{search, ExactEvent, ExactObserver, ExactOptions, Mode};
+use dissect_engine::{BoundConfig, EngineError, EngineEvent, EngineObserver, TimeLimit};
+use dissect_exact::{ExactEvent, ExactObserver};
 
 use crate::{input, InputError, Status};
-
-/// Raised by Ctrl-C.
-static STOP: AtomicBool = AtomicBool::new(false);
 
 #[derive(clap::Args, Debug)]
 #[command(allow_negative_numbers = true)]
@@ -106,16 +102,6 @@ impl ExactObserver for Lines {
     }
 }
 
-fn catch_ctrl_c() {
-    // The first Ctrl-C stops the search (what is proved is kept), a second
-    // one exits at once.
-    let _ = ctrlc::set_handler(|| {
-        if STOP.swap(true, Ordering::SeqCst) {
-            std::process::exit(130);
-        }
-    });
-}
-
 pub fn names(paths: &[PathBuf]) -> Vec<String> {
     paths.iter().map(|p| input::file_name(p)).collect()
 }
@@ -136,43 +122,50 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         );
         return Ok(Status::Ok);
     }
-    let deadline = args.time_limit.unwrap_or_default().deadline();
-    catch_ctrl_c();
-    let options = ExactOptions {
+    let config = BoundConfig {
         mirror: !args.no_mirror,
-        mode: Mode::LowerBound,
-        deadline,
         max_pieces: args.max_pieces,
-        ..ExactOptions::default()
+        time_limit: args.time_limit.unwrap_or_default(),
     };
+    let names = names(&args.figures);
     let observer = Lines {
         quiet: args.quiet,
         start: Instant::now(),
-        names: names(&args.figures),
+        names: names.clone(),
     };
-    let upper = AtomicUsize::new(usize::MAX);
-    let outcome = search(&figures, &options, &STOP, &upper, &observer)
-        .map_err(|e| InputError(e.to_string()))?;
-    let names = names(&args.figures);
-    if let Some(p) = &outcome.found {
+    let report = dissect_engine::bound(&figures, &names, &config, crate::stop::flag(), &observer)
+        .map_err(|e| match e {
+        e @ (EngineError::Figures(_) | EngineError::Exact(_)) => {
+            anyhow::Error::from(InputError(e.to_string()))
+        }
+        e => e.into(),
+    })?;
+    if let Some(found) = &report.found {
         println!(
             "a {}-piece dissection exists (found by SAT): the bound is optimal",
-            p[0].len()
+            found.piece_count()
         );
-    } else if let Some(dissect_exact::Limit::TooLarge { pieces, bytes }) = &outcome.limit {
+    } else if let Some((pieces, bytes, cap)) = report.too_large {
         println!(
             "stopped: the SAT encoding for {pieces} pieces would need about {} MiB \
              (over the cap of {} MiB); the bound below is the best proved",
             bytes >> 20,
-            options.max_encoding_bytes >> 20
+            cap >> 20
         );
-    } else if outcome.stopped {
+    } else if report.stopped() {
         println!("stopped (time limit or Ctrl-C); the bound below is the best proved");
     }
     println!(
         "lower bound: {} ({})",
-        outcome.lower_bound.value,
-        outcome.lower_bound.describe(&names)
+        report.lower_bound.value, report.lower_bound.reason
     );
     Ok(Status::Ok)
+}
+
+impl EngineObserver for Lines {
+    fn on_event(&self, event: &EngineEvent<'_>) {
+        if let EngineEvent::Exact(e) = event {
+            ExactObserver::on_event(self, e);
+        }
+    }
 }

@@ -11,6 +11,11 @@
 //!   side with shared bounds, ending as soon as the best dissection meets
 //!   the lower bound (`optimal`), the repair of near misses, and the
 //!   [`Report`].
+//! * [`bound()`]: the exact search's lower bound alone ([`BoundConfig`],
+//!   [`BoundReport`]), under the same time limit and stop flag.
+//! * [`assemblies()`]: the ways a dissection's pieces tile figures
+//!   ([`AssemblyEvent`], [`CountError`]), under the same time limit and
+//!   stop flag.
 //! * [`Verified`]: a dissection that passed [`dissect_core::verify`]; the
 //!   only kind of dissection a [`Report`] holds; [`Verified::assemblies`]
 //!   counts the ways its pieces tile each figure.
@@ -27,6 +32,8 @@
 //! Architecture invariant: like the core, this crate does no I/O and never
 //! prints.
 
+mod assemblies;
+mod bound;
 mod limits;
 mod monitor;
 mod options;
@@ -35,6 +42,8 @@ mod report;
 mod run;
 mod verified;
 
+pub use assemblies::{assemblies, AssemblyEvent, CountError};
+pub use bound::{bound, BoundConfig, BoundReport};
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
 pub use limits::{check_threads, LimitError, TimeLimit, MAX_THREADS};

@@ -155,8 +155,20 @@ impl Motions {
     /// Every distinct placement (as a sorted cell set) of `piece` inside
     /// `region` under the allowed motions.
     pub fn placements(&self, piece: &[Cell], region: &HashSet<Cell>) -> Vec<Vec<Cell>> {
+        self.placements_until(piece, region, &|| false)
+            .unwrap_or_default()
+    }
+
+    /// [`Motions::placements`], asking `interrupted` before each of the
+    /// lattice's orientations (`None` when it says so).
+    pub fn placements_until(
+        &self,
+        piece: &[Cell],
+        region: &HashSet<Cell>,
+        interrupted: &dyn Fn() -> bool,
+    ) -> Option<Vec<Vec<Cell>>> {
         let Some(&first) = piece.first() else {
-            return Vec::new();
+            return Some(Vec::new());
         };
         let l = self.geometry();
         let pts = self.points(piece);
@@ -165,6 +177,9 @@ impl Motions {
         let mut seen: HashSet<Vec<Cell>> = HashSet::new();
         let mut out = Vec::new();
         for g in &self.syms {
+            if interrupted() {
+                return None;
+            }
             let img: Vec<Point> = pts.iter().map(|p| g.apply(*p)).collect();
             let a = g.apply(anchor_cell);
             for q in &region_pts {
@@ -188,7 +203,7 @@ impl Motions {
                 }
             }
         }
-        out
+        Some(out)
     }
 
     /// The allowed motions that map `region` onto itself (its symmetries

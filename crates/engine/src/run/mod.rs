@@ -20,6 +20,7 @@ use dissect_puzzle::Motions;
 
 use crate::options::{RunConfig, RunOptions, Strategy};
 use crate::report::{Improvement, LowerBound, Report};
+pub(crate) use shared::{proof, Forward};
 use shared::{Judge, Shared};
 
 /// The exact search runs beside the heuristic only on figures of at most

@@ -272,7 +272,7 @@ impl Observer for Shared<'_> {
 /// The exact search's events, sent to the thread that owns the run (the
 /// exact search runs on a thread of its own that a stop does not wait for:
 /// parts of it, such as the cheap bound, do not look at the stop flag).
-pub(super) struct Forward(pub(super) Mutex<Sender<ExactEvent>>);
+pub(crate) struct Forward(pub(crate) Mutex<Sender<ExactEvent>>);
 
 impl ExactObserver for Forward {
     fn on_event(&self, event: &ExactEvent) {
@@ -323,7 +323,7 @@ impl Observer for NoSlivers<'_, '_> {
 }
 
 /// Why a dissection meeting `b` is optimal, in words.
-pub(super) fn proof(b: &Bound, names: &[String]) -> String {
+pub(crate) fn proof(b: &Bound, names: &[String]) -> String {
     match &b.reason {
         Reason::Sat {
             refuted, seconds, ..
