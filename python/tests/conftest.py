@@ -59,8 +59,8 @@ def check_independently(dissection: dissect.Dissection, tmp_path: Path) -> None:
     assert dissect.verify(dissection.figures, dissection) == dissection.piece_count
     tmp_path.mkdir(parents=True, exist_ok=True)
     files = []
-    for i, f in enumerate(dissection.figures):
-        p = tmp_path / f"figure-{i + 1}.txt"
+    for f, name in zip(dissection.figures, dissection.names):
+        p = tmp_path / name
         p.write_text(f.to_text())
         files.append(p)
     check_with_verify_py(dissection, files, tmp_path)
