@@ -322,14 +322,15 @@ class LowerBound:
 def _figures(figures: Any) -> List[Figure]:
     if isinstance(figures, (Figure, str, bytes)):
         raise ProblemError("figures must be a list of at least two dissect.Figure")
-    figures = list(figures)
+    out: List[Figure] = []
     for i, f in enumerate(figures):
         if not isinstance(f, Figure):
             raise ProblemError(
                 f"figure {i + 1} is a {type(f).__name__}, not a dissect.Figure "
                 "(use Figure.from_text, Figure.from_array or read_figure)"
             )
-    return figures
+        out.append(f)
+    return out
 
 
 def solve(

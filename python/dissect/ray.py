@@ -90,7 +90,7 @@ def solve_many(
         try:
             out.append(ray.get(ref))
         except ray.exceptions.RayTaskError as e:
-            cause = e.as_instanceof_cause()
+            cause: Exception = e.as_instanceof_cause()  # type: ignore[no-untyped-call]
             if not return_exceptions:
                 for r in refs:
                     ray.cancel(r)
@@ -189,7 +189,8 @@ def solve(
     """
     figures = dissect._figures(figures)
     if tasks is None:
-        tasks = max(1, int(ray.cluster_resources().get("CPU", 1)))
+        cpus = ray.cluster_resources().get("CPU", 1)  # type: ignore[no-untyped-call]
+        tasks = max(1, int(cpus))
     if tasks < 1:
         raise dissect.OptionError(f"tasks must be at least 1, got {tasks}")
     options.pop("threads", None)  # the workers run one exploration at a time

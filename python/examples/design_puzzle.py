@@ -13,13 +13,14 @@ puzzle/puzzle.svg (without).
 
 import argparse
 import os
+from typing import List
 
 import numpy as np
 
 import dissect
 
 
-def figures():
+def figures() -> List[dissect.Figure]:
     """The two figures, drawn as boolean arrays (row y, column x)."""
     two_squares = np.zeros((4, 8), dtype=bool)
     two_squares[1:4, 0:3] = True  # the 3x3 square
@@ -31,7 +32,7 @@ def figures():
     ]
 
 
-def main():
+def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default="puzzle", help="output folder (default: puzzle)")
     ap.add_argument("--seed", type=int, default=1)

@@ -28,9 +28,10 @@ def piece_of(d: dissect.Dissection, figure: int, cell: Tuple[int, ...]) -> int:
 def test_keep_regions_as_text_and_as_cell_groups(tmp_path: Path) -> None:
     plain = dissect.solve([RECT, BAR], seed=1)
     assert plain.piece_count == 2
-    for k, keep in enumerate(
-        [{0: "a..\na..\n"}, {0: [[(0, 0), (0, 1)]]}, {0: {"a": [(0, 0), (0, 1)]}}]
-    ):
+    keeps: List[Dict[int, dissect.Regions]] = [
+        {0: "a..\na..\n"}, {0: [[(0, 0), (0, 1)]]}, {0: {"a": [(0, 0), (0, 1)]}}
+    ]
+    for k, keep in enumerate(keeps):
         d = dissect.solve([RECT, BAR], seed=1, keep=keep)
         # The left column in one piece: no 2-piece cut of bars does that.
         assert piece_of(d, 0, (0, 0)) == piece_of(d, 0, (0, 1))

@@ -7,6 +7,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import List, Set
 
+import numpy as np
 import pytest
 
 import dissect
@@ -60,7 +61,8 @@ def test_plot_to_a_file_with_the_palette(name: str, lattice: str, tmp_path: Path
     assert len(polys) == 1
     cells = sum(len(p) for fig in d.pieces for p in fig)
     assert len(polys[0].get_paths()) == cells
-    colours: List[str] = [to_hex(c) for c in polys[0].get_facecolors()]
+    rgba = np.asarray(polys[0].get_facecolor(), dtype=float)
+    colours: List[str] = [to_hex((r, g, b)) for r, g, b, _ in rgba.tolist()]
     want = [dissect.PALETTE[i] for fig in d.pieces for i, p in enumerate(fig) for _ in p]
     assert sorted(colours) == sorted(want)
     labels = {t.get_text() for t in ax.texts}

@@ -18,13 +18,13 @@ from conftest import instance
 
 
 @pytest.fixture(scope="module")
-def cluster():
+def cluster() -> Iterator[None]:
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
     yield
     ray.shutdown()
 
 
-def problems():
+def problems() -> List[Any]:
     return [
         instance("squares-3-4-split-to-5", "square")[0],
         {"figures": instance("squares-3-4-split-to-5", "square")[0], "seed": 2},
@@ -33,7 +33,7 @@ def problems():
     ]
 
 
-def test_solve_many_matches_local_answers_in_order(cluster):
+def test_solve_many_matches_local_answers_in_order(cluster: None) -> None:
     import dissect.ray as dray
 
     remote = dray.solve_many(problems(), explorations=100)
@@ -41,11 +41,12 @@ def test_solve_many_matches_local_answers_in_order(cluster):
     for p, r in zip(problems(), remote):
         figures, opts = (p["figures"], {"seed": p["seed"]}) if isinstance(p, dict) else (p, {})
         local = dissect.solve(figures, explorations=100, **opts)
+        assert isinstance(r, dissect.Dissection)
         assert r.pieces == local.pieces
         assert r.verify()
 
 
-def test_solve_many_failures(cluster):
+def test_solve_many_failures(cluster: None) -> None:
     import dissect.ray as dray
 
     figures = instance("squares-3-4-split-to-5", "square")[0]
@@ -67,7 +68,9 @@ def test_solve_many_failures(cluster):
         ("cube4-cavity-to-7x4x2", "cubic", {"seed": 3, "explorations": 100}),
     ],
 )
-def test_distributed_search_gives_the_local_answer(cluster, name, lattice, options, tmp_path):
+def test_distributed_search_gives_the_local_answer(
+    cluster: None, name: str, lattice: str, options: Dict[str, Any], tmp_path: Path
+) -> None:
     import dissect.ray as dray
 
     from conftest import check_with_verify_py
@@ -95,7 +98,7 @@ def test_distributed_search_gives_the_local_answer(cluster, name, lattice, optio
     check_with_verify_py(spread, files, tmp_path)
 
 
-def test_distributed_search_errors(cluster):
+def test_distributed_search_errors(cluster: None) -> None:
     import dissect.ray as dray
 
     figures = instance("squares-3-4-split-to-5", "square")[0]
