@@ -42,10 +42,23 @@ def main() -> None:
     a, b = figures()
     print(f"{a.name}: {a.area} cells; {b.name}: {b.area} cells")
     print(a.to_text())
-    d = dissect.solve([a, b], seed=args.seed, time_limit=args.time_limit)
+    d = dissect.solve(
+        [a, b],
+        seed=args.seed,
+        time_limit=args.time_limit,
+        solutions=2,  # the two best different dissections, ranked
+        rank="smallest",  # by their smallest piece, largest first
+        min_piece=3,  # no piece under 3 cells
+        progress=lambda pieces, seconds, by: print(f"  {pieces} pieces at {seconds:.2f} s ({by})"),
+    )
     d.verify()  # the independent verifier; raises if anything is wrong
     state = "optimal" if d.optimal else f"lower bound {d.lower_bound}"
-    print(f"{d.piece_count} pieces ({state}), areas {d.areas}, {d.seconds:.2f} s")
+    print(f"{d.piece_count} pieces ({state}), areas {d.areas}, {d.seconds or 0:.2f} s")
+    for s in d.solutions:
+        s.verify()
+        print(f"  solution: smallest piece {s.scores['smallest']}, areas {s.areas}")
+    for c in d.assemblies(time_limit=10):
+        print(f"  {c.figure}: {c.tilings} tilings, {c.up_to_symmetry} up to its symmetries")
 
     os.makedirs(args.out, exist_ok=True)
     d.to_json(os.path.join(args.out, "puzzle.json"))
