@@ -61,14 +61,23 @@ pub(crate) fn apply(
                 .map_err(|e| bad(format!("rank: {e}")))?;
         }
         "min_piece" | "max_piece" => {
-            let (min, max) = (config.constraints.min_piece(), config.constraints.max_piece());
+            let (min, max) = (
+                config.constraints.min_piece(),
+                config.constraints.max_piece(),
+            );
             let v = optional(value)?;
-            let (min, max) = if key == "min_piece" { (v, max) } else { (min, v) };
+            let (min, max) = if key == "min_piece" {
+                (v, max)
+            } else {
+                (min, v)
+            };
             config.constraints = config.constraints.clone().with_sizes(min, max);
         }
         "checkerboard" => {
             if !value.is_instance_of::<PyBool>() {
-                return Err(bad(format!("checkerboard must be True or False, got {value}")));
+                return Err(bad(format!(
+                    "checkerboard must be True or False, got {value}"
+                )));
             }
             config.constraints = config
                 .constraints
@@ -118,7 +127,12 @@ fn keep_regions(
             ))
         })?;
     let what = format!("keep[{index}]");
-    let engine = |e: ConstraintError| bad(format!("{what}: {}", crate::solve::python_words(&e.to_string())));
+    let engine = |e: ConstraintError| {
+        bad(format!(
+            "{what}: {}",
+            crate::solve::python_words(&e.to_string())
+        ))
+    };
     if regions.is_instance_of::<PyString>() {
         let text: String = regions.extract()?;
         return KeepRegions::parse(&text, index, figures).map_err(engine);
@@ -140,7 +154,9 @@ fn keep_regions(
     if let Ok(dict) = regions.cast::<PyDict>() {
         for (letter, group) in dict.iter() {
             let name: String = letter.extract().map_err(|_| {
-                bad(format!("{what}: a region is named by a letter a-z, got {letter}"))
+                bad(format!(
+                    "{what}: a region is named by a letter a-z, got {letter}"
+                ))
             })?;
             let mut chars = name.chars();
             let (Some(c), None) = (chars.next(), chars.next()) else {

@@ -229,11 +229,9 @@ pub(crate) fn check(py: Python<'_>, figures: &[Figure], options: &RunOptions) ->
     match dissect_engine::check(figures, options) {
         Ok(()) => Ok(()),
         Err(EngineError::Constraints(e)) if e.is_impossible() => Err(impossible(py, &e)),
-        Err(EngineError::Constraints(e)) => Err(error(
-            py,
-            Kind::Option,
-            python_words(&e.to_string()),
-        )),
+        Err(EngineError::Constraints(e)) => {
+            Err(error(py, Kind::Option, python_words(&e.to_string())))
+        }
         Err(e) => Err(error(py, Kind::Problem, e.to_string())),
     }
 }
@@ -551,7 +549,10 @@ fn report_to_py<'py>(
     out.set_item("solutions", solutions)?;
     out.set_item(
         "rank",
-        report.ranking.as_ref().map_or(options.config().rank.name(), |r| r.rank.name()),
+        report
+            .ranking
+            .as_ref()
+            .map_or(options.config().rank.name(), |r| r.rank.name()),
     )?;
     Ok(out)
 }
@@ -696,5 +697,6 @@ pub(crate) fn dissection_from_py(
                 .collect::<PyResult<Vec<_>>>()
         })
         .collect::<PyResult<Vec<_>>>()?;
-    Dissection::new(kind, mirror, names, pieces).map_err(|e| error(py, Kind::InvalidSolution, e.to_string()))
+    Dissection::new(kind, mirror, names, pieces)
+        .map_err(|e| error(py, Kind::InvalidSolution, e.to_string()))
 }
