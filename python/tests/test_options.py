@@ -2,6 +2,7 @@
 checked by `dissect.verify` and by the independent checkers; several
 solutions; the progress callback."""
 
+import time
 from pathlib import Path
 from typing import Any, Dict, List, Sequence, Tuple
 
@@ -178,6 +179,24 @@ def test_progress_receives_each_improvement_as_it_happens() -> None:
     assert pieces == sorted(pieces, reverse=True) and pieces[-1] == d.piece_count
     seconds = [t for _, t, _ in calls]
     assert seconds == sorted(seconds)
+
+
+def test_progress_is_called_during_the_run_not_after() -> None:
+    figures, _ = instance("squares-6-6-7-split-to-11", "square")
+    start = time.monotonic()
+    seen: List[Tuple[float, float]] = []
+
+    def progress(pieces: int, seconds: float, source: str) -> None:
+        seen.append((time.monotonic() - start, seconds))
+
+    d = dissect.solve(figures, seed=1, time_limit=3, progress=progress)
+    took = time.monotonic() - start
+    assert d.stopped and took >= 2.9
+    assert seen
+    # The first improvement reached Python within a moment of being found,
+    # long before the run ended.
+    wall, seconds = seen[0]
+    assert wall - seconds < 0.5 and wall < took - 1.0, (seen, took)
 
 
 def test_progress_exception_stops_the_run() -> None:
