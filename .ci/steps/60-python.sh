@@ -6,7 +6,8 @@
 # from PyPI, pinned in python/ci-requirements.txt), `mypy --strict` over
 # python/examples and python/tests against the installed package (its
 # stubs and py.typed), and its pytest suite: figures, every solve option
-# checked by dissect.verify and the independent checkers, several
+# checked by dissect.verify and the independent checkers
+# (tools/check_solution.py, and ../shared/tools/verify.py when present), several
 # solutions, assemblies, progress, the same answer as the CLI, Ctrl-C,
 # pictures with the one palette (Agg), and Ray on a local 2-CPU cluster.
 # Takes about 5 minutes (the Rust build of the extension is most of it).

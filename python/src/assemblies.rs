@@ -11,7 +11,7 @@ use pyo3::types::{PyDict, PyList};
 
 use crate::errors::{error, Kind};
 use crate::figure::PyFigure;
-use crate::run::{deadline, watched};
+use crate::run::watched;
 use crate::solve::dissection_from_py;
 
 /// Counts the tilings of each figure by the dissection's pieces; a dict
@@ -30,10 +30,11 @@ pub(crate) fn assemblies<'py>(
     pieces: Vec<Vec<Vec<Vec<i64>>>>,
     time_limit: Option<f64>,
 ) -> PyResult<Bound<'py, PyList>> {
-    // The one check of a time limit (NaN, negative).
-    deadline(time_limit).map_err(|m| error(py, Kind::Option, m))?;
-    let time = time_limit
-        .and_then(|t| Duration::try_from_secs_f64(t).ok())
+    // The engine's one rule for a time limit (NaN, negative: refused;
+    // infinite or none: no limit).
+    let time = crate::run::time_limit(time_limit)
+        .map_err(|m| error(py, Kind::Option, m))?
+        .duration()
         .unwrap_or(Duration::MAX);
     let figs: Vec<_> = figures.iter().map(|f| f.figure.clone()).collect();
     let d = dissection_from_py(py, lattice, mirror, names.clone(), &pieces)?;

@@ -132,15 +132,10 @@ pub(crate) fn run_options(
     figures: &[Figure],
 ) -> PyResult<RunOptions> {
     let bad = |m: String| error(py, Kind::Option, m);
-    if threads > 256 {
-        return Err(bad(format!(
-            "threads={threads} is too many (at most 256; 0 means one per core)"
-        )));
-    }
     let mut c = RunConfig {
         seed,
-        threads,
-        time_limit,
+        threads: crate::run::threads(threads).map_err(bad)?,
+        time_limit: crate::run::time_limit(time_limit).map_err(bad)?,
         ..RunConfig::default()
     };
     let (mut paper, mut exact) = (false, false);
@@ -452,7 +447,7 @@ fn not_found(py: Python<'_>, report: &Report, options: &RunOptions) -> PyErr {
     let why = match report.end {
         End::TimeLimit => format!(
             "the time limit of {} s was reached",
-            options.config().time_limit.unwrap_or_default()
+            options.config().time_limit.seconds().unwrap_or_default()
         ),
         _ => match options.config().max_pieces {
             Some(k) => format!("max_pieces={k} was reached"),
