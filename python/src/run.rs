@@ -37,8 +37,30 @@ pub(crate) fn watched<T: Send>(
     deadline: Option<Instant>,
     work: impl FnOnce() -> T + Send,
 ) -> PyResult<Watched<T>> {
+    watched_polling(py, stop, deadline, &mut |_| Ok(()), work)
+}
+
+/// [`watched`], calling `poll` with the GIL on the calling thread at every
+/// wake (every 50 ms) and once more after the work ended: how events the
+/// work queued reach Python callbacks (`progress=`). An exception `poll`
+/// raises stops the work and is handed back like Ctrl-C's.
+pub(crate) fn watched_polling<T: Send>(
+    py: Python<'_>,
+    stop: &AtomicBool,
+    deadline: Option<Instant>,
+    poll: &mut dyn FnMut(Python<'_>) -> PyResult<()>,
+    work: impl FnOnce() -> T + Send,
+) -> PyResult<Watched<T>> {
     let done = (Mutex::new(false), Condvar::new());
     let mut interrupted = None;
+    let mut poll_now = |interrupted: &mut Option<PyErr>| {
+        if interrupted.is_none() {
+            if let Err(e) = poll(py) {
+                stop.store(true, Ordering::SeqCst);
+                *interrupted = Some(e);
+            }
+        }
+    };
     let value = std::thread::scope(|s| {
         let worker = s.spawn(|| {
             let value = work();
@@ -60,6 +82,7 @@ pub(crate) fn watched<T: Send>(
                     .unwrap_or_else(|e| e.into_inner());
                 *guard
             });
+            poll_now(&mut interrupted);
             if finished {
                 break;
             }
