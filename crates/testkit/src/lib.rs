@@ -1,6 +1,9 @@
 //! Inputs the tests of several crates and the fuzz loop share: pictures
 //! whose headers claim huge sizes (decompression bombs), SVG bombs, and the
-//! closed box mesh. Plain bytes and strings: no dependency, no I/O.
+//! closed box mesh, and an independent replay of disassembly plans
+//! ([`disassembly`]). Plain bytes and strings: no dependency, no I/O.
+
+pub mod disassembly;
 
 /// An SVG of 111 bytes whose width and height are 10^9: a renderer that
 /// trusts them allocates 10^18 pixels.
