@@ -40,6 +40,8 @@ pub enum Command {
     Voxelize(crate::render::VoxelizeArgs),
     /// Count the ways a solution's pieces tile each figure (and say when it is unique).
     Assemblies(crate::assemblies::AssembliesArgs),
+    /// Take each 3D figure of a solution apart by straight moves: the plan and its level, or the locked pieces.
+    Disassemble(crate::disassemble::DisassembleArgs),
 }
 
 /// A thread count from 0 (one per core) to 256.

@@ -12,6 +12,9 @@
 //! * [`Verified`]: a dissection that passed [`dissect_core::verify`]; the
 //!   only kind of dissection a [`Report`] holds; [`Verified::assemblies`]
 //!   counts the ways its pieces tile each figure.
+//! * [`disassemble()`]: whether each figure of a dissection can be taken
+//!   apart by straight moves (the plan, its level), within a time limit
+//!   and a stop flag.
 //! * [`EngineObserver`]: live events (level progress, improvements, bounds).
 //! * Puzzle runs ([`RunConfig::solutions`], [`RunConfig::rank`],
 //!   [`RunConfig::constraints`]): every candidate of the heuristic is judged
@@ -25,13 +28,16 @@
 //! Architecture invariant: like the core, this crate does no I/O and never
 //! prints.
 
+mod disassemble;
 mod options;
 mod repair;
 mod report;
 mod run;
 mod verified;
 
+pub use disassemble::disassemble;
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
+pub use dissect_puzzle::disassembly::{Disassembly, DisassemblyError, Plan as DisassemblyPlan};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
 pub use options::{
     OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS,
