@@ -5,13 +5,12 @@
 use std::io::Write;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Duration;
 
 use anyhow::Result;
 use clap::Args;
 use dissect_core::ascii::piece_letter;
 use dissect_core::LatticeKind;
-use dissect_engine::{Disassembly, DisassemblyError};
+use dissect_engine::{Disassembly, DisassemblyError, TimeLimit};
 use dissect_puzzle::disassembly::{plan_json, Undecided, MAX_STATES};
 
 use crate::{input, output, InputError, Status};
@@ -30,7 +29,7 @@ pub struct DisassembleArgs {
     pub output: Option<PathBuf>,
     /// Stop after this many seconds in all; figures not decided by then say so.
     #[arg(long, value_name = "SECS")]
-    pub time_limit: Option<f64>,
+    pub time_limit: Option<TimeLimit>,
     /// Print nothing but the result lines and errors.
     #[arg(long, short)]
     pub quiet: bool,
@@ -71,16 +70,7 @@ pub fn run(args: DisassembleArgs) -> Result<Status> {
     let (_, dissection) = input::solution(&args.solution)?;
     input::check_solution_lattice(&args.solution, dissection.lattice(), args.lattice)?;
     let lattice = dissection.lattice();
-    let time_limit = match args.time_limit {
-        Some(t) if t.is_nan() || t < 0.0 => {
-            return Err(InputError(format!(
-                "--time-limit must be a number of seconds >= 0, not {t}"
-            ))
-            .into())
-        }
-        Some(t) if t.is_finite() => Some(Duration::from_secs_f64(t.min(1e9))),
-        _ => None,
-    };
+    let time_limit = args.time_limit.unwrap_or_default();
     if let Some(path) = &args.output {
         input::check_writable(path)?;
     }
