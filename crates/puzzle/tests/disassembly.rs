@@ -503,3 +503,61 @@ fn a_stop_or_a_state_cap_leaves_it_undecided() {
         Disassembly::Undecided(Undecided::TooManyStates)
     );
 }
+
+#[test]
+fn the_assembly_rules_are_constraints() {
+    use dissect_puzzle::constraints::{ConstraintError, Violation};
+    use dissect_puzzle::{Constraints, Motions};
+    let motions = Motions::new(LatticeKind::Cubic, false);
+    let rings = vec![voxel_pieces(LINKED_RINGS)];
+    let slider = vec![slider()];
+    let assemblable = Constraints::none().with_assembly(true, None);
+    assert!(!assemblable.is_empty());
+    assert_eq!(
+        assemblable.check(&motions, &rings),
+        vec![Violation::NotAssemblable { figure: 0 }]
+    );
+    assert!(assemblable.check(&motions, &slider).is_empty());
+    let level2 = Constraints::none().with_assembly(false, Some(2));
+    assert!(level2.assemblable(), "a least level implies assemblable");
+    assert!(level2.check(&motions, &slider).is_empty());
+    let level3 = Constraints::none().with_assembly(false, Some(3));
+    assert_eq!(
+        level3.check(&motions, &slider),
+        vec![Violation::LevelTooLow {
+            figure: 0,
+            level: 2
+        }]
+    );
+    assert_eq!(level3.to_json(LatticeKind::Cubic)["min_level"], 3);
+    // A flat figure always comes apart at level 1: 2 or more is impossible.
+    let flat = dissect_core::io::parse_figure("##\n", LatticeKind::Square).unwrap();
+    let e = level2.validate(std::slice::from_ref(&flat)).unwrap_err();
+    assert_eq!(e, ConstraintError::FlatLevel(2));
+    assert!(e.is_impossible());
+    assert!(assemblable.validate(&[flat]).is_ok());
+    let zero = Constraints::none().with_assembly(false, Some(0));
+    assert_eq!(
+        zero.validate_settings(),
+        Err(ConstraintError::ZeroSize("min-level"))
+    );
+}
+
+#[test]
+fn rank_level_puts_the_most_interlocking_first() {
+    use dissect_puzzle::{Motions, Rank, Scores};
+    let motions = Motions::new(LatticeKind::Cubic, false);
+    let with = |levels: Vec<Option<usize>>| Scores {
+        levels: Some(levels),
+        ..Scores::of(&motions, &[vec![[0, 0, 0]], vec![[1, 0, 0]]])
+    };
+    let mut items = vec![
+        (with(vec![Some(1), Some(3)]), "1"),
+        (with(vec![None, Some(5)]), "locked"),
+        (with(vec![Some(2), Some(2)]), "2"),
+    ];
+    Rank::Level.sort(&mut items);
+    let order: Vec<&str> = items.iter().map(|i| i.1).collect();
+    assert_eq!(order, vec!["2", "1", "locked"]);
+    assert_eq!("level".parse::<Rank>(), Ok(Rank::Level));
+}

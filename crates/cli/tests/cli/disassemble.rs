@@ -210,3 +210,63 @@ fn a_group_move_is_written_and_replays() {
     let levels = replay_all(&plan, &json(&sb.read("pairs.json")));
     assert_eq!(levels, vec![Some(1)]);
 }
+
+#[test]
+fn solve_assemblable_records_levels_and_its_plans_replay() {
+    let sb = Sandbox::new();
+    sb.write("cube.txt", "##\n##\n\n##\n##\n");
+    sb.write("slab.txt", "####\n####\n");
+    for extra in [
+        &["--assemblable"][..],
+        &["--rank", "level", "--solutions", "2"],
+    ] {
+        let mut args = vec![
+            "solve",
+            "--lattice",
+            "cubic",
+            "--seed",
+            "1",
+            "--quiet",
+            "-o",
+            "s.json",
+        ];
+        args.extend_from_slice(extra);
+        args.extend(["cube.txt", "slab.txt"]);
+        sb.run(&args).expect_code(0);
+        crate::support::assert_valid(&sb, "cubic", "s.json", &["cube.txt", "slab.txt"]);
+        let solution = json(&sb.read("s.json"));
+        let levels = solution["levels"].as_array().expect("levels").clone();
+        assert_eq!(levels.len(), 2, "{solution}");
+        let run = sb.run(&[
+            "disassemble",
+            "--solution",
+            "s.json",
+            "-o",
+            "p.json",
+            "cube.txt",
+            "slab.txt",
+        ]);
+        run.expect_code(0);
+        let replayed = replay_all(&json(&sb.read("p.json")), &solution);
+        let want: Vec<Option<usize>> = levels
+            .iter()
+            .map(|l| l.as_u64().map(|l| l as usize))
+            .collect();
+        assert_eq!(replayed, want);
+    }
+    let solution = json(&sb.read("s.json"));
+    assert_eq!(solution["rank"]["by"], "level");
+}
+
+#[test]
+fn min_level_on_flat_figures_is_impossible() {
+    let sb = Sandbox::new();
+    sb.write("a.txt", "####\n");
+    sb.write("b.txt", "##\n##\n");
+    sb.run(&["solve", "--min-level", "2", "a.txt", "b.txt"])
+        .expect_code(1)
+        .stderr_has(&["--min-level 2 on a flat lattice"]);
+    sb.run(&["solve", "--min-level", "0", "a.txt", "b.txt"])
+        .expect_code(2)
+        .stderr_has(&["--min-level must be at least 1"]);
+}
