@@ -367,7 +367,11 @@ impl Search<'_> {
                 return Err(Undecided::Stopped);
             }
             let at = nodes[next].at.clone();
-            for (group, by, removed) in self.moves(ids, &at, all, anchor) {
+            let mut moves = self.moves(ids, &at, all, anchor);
+            // Removals first, of the smallest groups first (a plan that takes
+            // single pieces off where it can); the order is deterministic.
+            moves.sort_by_key(|&(group, _, removed)| (!removed, group.count_ones()));
+            for (group, by, removed) in moves {
                 if removed {
                     let removal = Removal {
                         node: next,
