@@ -41,6 +41,8 @@ pub enum Command {
     Voxelize(crate::render::VoxelizeArgs),
     /// Count the ways a solution's pieces tile each figure (and say when it is unique).
     Assemblies(crate::assemblies::AssembliesArgs),
+    /// Take each 3D figure of a solution apart by straight moves: the plan and its level, or the locked pieces.
+    Disassemble(crate::disassemble::DisassembleArgs),
 }
 
 /// A thread count from 0 (one per core) to the engine's
@@ -175,7 +177,7 @@ pub struct SolveArgs {
     /// Write up to N different dissections with the fewest pieces: OUT.json (the best), OUT-2.json, ...
     #[arg(long, default_value_t = defaults().solutions, value_name = "N", value_parser = whole_usize::<0>)]
     pub solutions: usize,
-    /// How several solutions are ranked: variance (default), smallest, shapes, symmetry, unique.
+    /// How several solutions are ranked: variance (default), smallest, shapes, symmetry, unique, level.
     #[arg(long, value_name = "CRITERION", value_parser = rank)]
     pub rank: Option<dissect_engine::Rank>,
     /// Every piece has at least C cells.
@@ -184,6 +186,12 @@ pub struct SolveArgs {
     /// Every piece has at most C cells.
     #[arg(long, value_name = "C", value_parser = whole_usize::<0>)]
     pub max_piece: Option<usize>,
+    /// Accept only dissections whose every 3D figure comes apart by straight moves (dissect disassemble).
+    #[arg(long)]
+    pub assemblable: bool,
+    /// Every figure needs at least L moves before its first piece comes free (interlocking; implies --assemblable).
+    #[arg(long, value_name = "L", value_parser = whole_usize::<0>)]
+    pub min_level: Option<usize>,
     /// Every piece keeps the colour of each of its cells in a checkerboard colouring (square, cubic).
     #[arg(long)]
     pub checkerboard: bool,

@@ -2,6 +2,7 @@
 
 mod args;
 mod assemblies;
+mod disassemble;
 mod info;
 mod input;
 mod output;
@@ -53,6 +54,7 @@ fn main() -> ExitCode {
         #[cfg(feature = "render")]
         args::Command::Voxelize(a) => render::voxelize(a),
         args::Command::Assemblies(a) => assemblies::run(a),
+        args::Command::Disassemble(a) => disassemble::run(a),
     };
     match result {
         Ok(Status::Ok) => ExitCode::SUCCESS,

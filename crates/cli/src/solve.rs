@@ -223,6 +223,7 @@ fn constraints(args: &SolveArgs, figures: &[Figure]) -> Result<Constraints> {
     let mut c = Constraints::none()
         .with_sizes(args.min_piece, args.max_piece)
         .with_checkerboard(args.checkerboard)
+        .with_assembly(args.assemblable, args.min_level)
         .with_symmetry_weight(args.symmetry_weight.unwrap_or(0.0));
     for k in &args.keep {
         let KeepArg::Regions(n, path) = k else {

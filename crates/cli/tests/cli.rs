@@ -15,6 +15,8 @@ mod anytime;
 mod assemblies;
 #[path = "cli/bad_input.rs"]
 mod bad_input;
+#[path = "cli/disassemble.rs"]
+mod disassemble;
 #[path = "cli/display.rs"]
 mod display;
 #[path = "cli/exit_codes.rs"]

@@ -19,6 +19,9 @@
 //! * [`Verified`]: a dissection that passed [`dissect_core::verify`]; the
 //!   only kind of dissection a [`Report`] holds; [`Verified::assemblies`]
 //!   counts the ways its pieces tile each figure.
+//! * [`disassemble()`]: whether each figure of a dissection can be taken
+//!   apart by straight moves (the plan, its level), within a time limit
+//!   and a stop flag.
 //! * [`EngineObserver`]: live events (level progress, improvements, bounds).
 //! * Puzzle runs ([`RunConfig::solutions`], [`RunConfig::rank`],
 //!   [`RunConfig::constraints`]): every candidate of the heuristic is judged
@@ -34,6 +37,7 @@
 
 mod assemblies;
 mod bound;
+mod disassemble;
 mod limits;
 mod monitor;
 mod options;
@@ -44,7 +48,9 @@ mod verified;
 
 pub use assemblies::{assemblies, AssemblyEvent, CountError};
 pub use bound::{bound, BoundConfig, BoundReport};
+pub use disassemble::disassemble;
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
+pub use dissect_puzzle::disassembly::{Disassembly, DisassemblyError, Plan as DisassemblyPlan};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
 pub use limits::{check_threads, LimitError, TimeLimit, MAX_THREADS};
 pub use options::{

@@ -138,6 +138,15 @@ impl<'a> Shared<'a> {
             .map_or(Source::Search, |i| i.source)
     }
 
+    /// Whether the run's constraints hold rules the exact side does not
+    /// encode (`--assemblable`, `--min-level`): its dissections then count
+    /// only once the judge's collection accepts them.
+    fn exact_unchecked(&self) -> bool {
+        self.judge
+            .as_ref()
+            .is_some_and(|j| j.constraints.assemblable())
+    }
+
     pub(super) fn seconds(&self) -> f64 {
         self.start.elapsed().as_secs_f64()
     }
@@ -290,7 +299,11 @@ impl ExactObserver for Shared<'_> {
             ExactEvent::CheapBound(b) | ExactEvent::Refuted(b) => {
                 self.raise_lower(b.value, || (b.describe(self.names), proof(b, self.names)))
             }
-            ExactEvent::Found { pieces, .. } => self.found(*pieces, Source::Sat),
+            // The exact side cannot encode the assembly rules: what it
+            // finds under them is no answer until the collection checks it.
+            ExactEvent::Found { pieces, .. } if !self.exact_unchecked() => {
+                self.found(*pieces, Source::Sat)
+            }
             _ => {}
         }
         self.observer.on_event(&EngineEvent::Exact(event));
