@@ -40,6 +40,8 @@ pub enum Command {
     Voxelize(crate::render::VoxelizeArgs),
     /// Count the ways a solution's pieces tile each figure (and say when it is unique).
     Assemblies(crate::assemblies::AssembliesArgs),
+    /// Count every dissection with the fewest pieces (or --pieces K), complete, up to the first figure's symmetries.
+    Enumerate(crate::enumerate::EnumerateArgs),
 }
 
 /// A thread count from 0 (one per core) to 256.

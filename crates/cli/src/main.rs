@@ -2,6 +2,7 @@
 
 mod args;
 mod assemblies;
+mod enumerate;
 mod info;
 mod input;
 mod output;
@@ -52,6 +53,7 @@ fn main() -> ExitCode {
         #[cfg(feature = "render")]
         args::Command::Voxelize(a) => render::voxelize(a),
         args::Command::Assemblies(a) => assemblies::run(a),
+        args::Command::Enumerate(a) => enumerate::run(a),
     };
     match result {
         Ok(Status::Ok) => ExitCode::SUCCESS,

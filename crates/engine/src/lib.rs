@@ -12,6 +12,9 @@
 //! * [`Verified`]: a dissection that passed [`dissect_core::verify`]; the
 //!   only kind of dissection a [`Report`] holds; [`Verified::assemblies`]
 //!   counts the ways its pieces tile each figure.
+//! * [`enumerate()`]: every dissection with K pieces (the minimum, proved,
+//!   unless K is given), each [`Verified`], in classes up to the first
+//!   figure's symmetries, with the time limit and the stop flag.
 //! * [`EngineObserver`]: live events (level progress, improvements, bounds).
 //! * Puzzle runs ([`RunConfig::solutions`], [`RunConfig::rank`],
 //!   [`RunConfig::constraints`]): every candidate of the heuristic is judged
@@ -25,14 +28,19 @@
 //! Architecture invariant: like the core, this crate does no I/O and never
 //! prints.
 
+mod enumerate;
 mod options;
 mod repair;
 mod report;
 mod run;
 mod verified;
 
+pub use dissect_exact::{EnumerateEvent, EnumerateObserver};
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
+pub use enumerate::{
+    enumerate, EnumerateConfig, EnumerateError, EnumeratedClass, EnumerationReport,
+};
 pub use options::{
     OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS,
     PLATEAU_IDLE_ROUNDS,
