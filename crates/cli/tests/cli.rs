@@ -16,6 +16,8 @@ mod assemblies;
 mod bad_input;
 #[path = "cli/display.rs"]
 mod display;
+#[path = "cli/enumerate.rs"]
+mod enumerate;
 #[path = "cli/exit_codes.rs"]
 mod exit_codes;
 #[path = "cli/hostile.rs"]
