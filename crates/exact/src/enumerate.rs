@@ -19,9 +19,14 @@
 //!
 //! Up to symmetry: two cuts are one class when a symmetry of the first
 //! figure (rotations, and reflections when pieces may be turned over) maps
-//! one onto the other ([`dissect_puzzle::Motions::canonical_cut`]).
+//! one onto the other ([`dissect_puzzle::Motions::canonical_cut`]). Such an
+//! image of a dissection's cut is a dissection too (the same pieces, placed
+//! as before in the other figures; the symmetry is an allowed motion), so
+//! each model yields its whole class at once: every distinct image is
+//! verified, counted and blocked (by the clause of its own labelling), and
+//! the SAT solver is asked once per class, not once per dissection.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Instant;
 
@@ -30,7 +35,7 @@ use dissect_core::{Cell, Figure};
 use crate::bound::{cheap, Bound};
 use crate::connectivity_cut::cuts;
 use crate::motion::MotionSet;
-use crate::placement_encoding::{encode, estimate, EncodingSize};
+use crate::placement_encoding::{encode, estimate, Encoding, EncodingSize};
 use crate::reachability_encoding::{add_connectivity, connectivity_size};
 use crate::sat_backend::Sat;
 use crate::search::{
@@ -302,7 +307,16 @@ impl Run<'_> {
             },
         });
         let motions = dissect_puzzle::Motions::new(inst.lattice, inst.mirror);
-        let symmetries = motions.symmetries_of(self.figures[0].cells());
+        let cut_of = Cuts {
+            symmetries: motions.symmetries_of(self.figures[0].cells()),
+            motions,
+            index: shape0
+                .cells
+                .iter()
+                .enumerate()
+                .map(|(i, c)| (*c, i))
+                .collect(),
+        };
         loop {
             let answer = sat.solve(self.options.deadline);
             self.out.conflicts = sat.conflicts();
@@ -330,28 +344,122 @@ impl Run<'_> {
                 }
                 continue;
             }
-            // Forbid this cut of the first figure (its one labelling).
-            let block: Vec<i32> = pieces[0]
-                .iter()
-                .enumerate()
-                .flat_map(|(i, p)| p.iter().map(move |&c| (i, c)))
-                .map(|(i, c)| -enc.cell[0][i][c])
-                .collect();
-            sat.add(&block);
             let found = crate::search::to_cells(&inst, &pieces);
-            dissect_core::verify::verify_pieces(inst.lattice, inst.mirror, self.figures, &found)
-                .map_err(|v| ExactError::InvalidModel(v[0].to_string()))?;
-            let canonical = motions.canonical_cut(&symmetries, &found[0]);
+            self.record(
+                &mut sat,
+                &enc,
+                &cut_of,
+                &clique[..clique.len().min(k)],
+                &found,
+            )?;
+        }
+    }
+
+    /// Records a dissection found by the model and every image of its cut
+    /// under the first figure's symmetries (each one a dissection too: the
+    /// same pieces, placed as before in the other figures), each verified
+    /// and forbidden by the blocking clause of its one labelling.
+    fn record(
+        &mut self,
+        sat: &mut Sat<'_>,
+        enc: &Encoding,
+        cut_of: &Cuts,
+        fixed: &[usize],
+        found: &[Vec<Vec<Cell>>],
+    ) -> Result<(), ExactError> {
+        let mut seen = HashSet::new();
+        for t in &cut_of.symmetries {
+            let image: Option<Vec<Vec<Cell>>> = found[0]
+                .iter()
+                .map(|p| p.iter().map(|&c| cut_of.motions.move_cell(t, c)).collect())
+                .collect();
+            let Some(mut image) = image else {
+                continue;
+            };
+            for p in &mut image {
+                p.sort_unstable();
+            }
+            let mut key = image.clone();
+            key.sort_unstable();
+            if !seen.insert(key) {
+                continue;
+            }
+            let Some(labels) = cut_of.labelling(&image, fixed) else {
+                continue;
+            };
+            let block: Vec<i32> = labels.iter().map(|&(i, c)| -enc.cell[0][i][c]).collect();
+            sat.add(&block);
+            let mut dissection = found.to_vec();
+            dissection[0] = image;
+            dissect_core::verify::verify_pieces(
+                self.figures[0].lattice(),
+                cut_of.motions.mirror(),
+                self.figures,
+                &dissection,
+            )
+            .map_err(|v| ExactError::InvalidModel(v[0].to_string()))?;
+            let canonical = cut_of
+                .motions
+                .canonical_cut(&cut_of.symmetries, &dissection[0]);
             let fresh = self.canonical.len();
             let class = *self.canonical.entry(canonical).or_insert(fresh);
             self.out.classes = self.canonical.len();
             self.out.class_of.push(class);
-            self.out.dissections.push(found);
+            self.out.dissections.push(dissection);
             self.observer.on_event(&EnumerateEvent::Found {
                 count: self.out.dissections.len(),
                 classes: self.out.classes,
                 seconds: self.start.elapsed().as_secs_f64(),
             });
         }
+        Ok(())
+    }
+}
+
+/// The first figure's cells, motions and symmetries: what turns a cut into
+/// its images and their labellings.
+struct Cuts {
+    motions: dissect_puzzle::Motions,
+    /// The symmetries of the first figure (the identity first).
+    symmetries: Vec<dissect_core::transform::Transform>,
+    /// Each cell's index in the model's first shape.
+    index: HashMap<Cell, usize>,
+}
+
+impl Cuts {
+    /// The one labelling the symmetry breaking allows for a cut: the piece
+    /// holding `fixed[j]` is piece `j`, the others follow in the order of
+    /// their first cell; `(label, cell index)` for every cell. `None` for a
+    /// cut that puts two fixed cells in one piece (never a dissection).
+    fn labelling(&self, cut: &[Vec<Cell>], fixed: &[usize]) -> Option<Vec<(usize, usize)>> {
+        let cells: Vec<Vec<usize>> = cut
+            .iter()
+            .map(|p| p.iter().map(|c| self.index[c]).collect())
+            .collect();
+        let mut label = vec![usize::MAX; cells.len()];
+        for (j, f) in fixed.iter().enumerate() {
+            let piece = cells.iter().position(|p| p.contains(f))?;
+            if label[piece] != usize::MAX {
+                return None;
+            }
+            label[piece] = j;
+        }
+        let mut rest: Vec<usize> = (0..cells.len())
+            .filter(|&i| label[i] == usize::MAX)
+            .collect();
+        rest.sort_by_key(|&i| cells[i].iter().min().copied());
+        for (n, i) in rest.into_iter().enumerate() {
+            label[i] = fixed.len() + n;
+        }
+        Some(
+            cells
+                .iter()
+                .enumerate()
+                .flat_map(|(i, p)| {
+                    let l = label[i];
+                    p.iter().map(move |&c| (l, c))
+                })
+                .collect(),
+        )
     }
 }
