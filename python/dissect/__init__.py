@@ -18,6 +18,7 @@ search's explorations, on a Ray cluster.
 
 from __future__ import annotations
 
+import builtins
 import json
 import os
 from typing import Any, Dict, List, Optional, Sequence, Union
@@ -39,6 +40,8 @@ __all__ = [
     "LowerBound",
     "solve",
     "bound",
+    "enumerate",
+    "Enumeration",
     "verify",
     "read_figure",
     "LATTICES",
@@ -218,7 +221,7 @@ def _figures(figures) -> List[Figure]:
     if isinstance(figures, (Figure, str, bytes)):
         raise ProblemError("figures must be a list of at least two dissect.Figure")
     figures = list(figures)
-    for i, f in enumerate(figures):
+    for i, f in builtins.enumerate(figures):
         if not isinstance(f, Figure):
             raise ProblemError(
                 f"figure {i + 1} is a {type(f).__name__}, not a dissect.Figure "
@@ -286,3 +289,7 @@ def verify(figures: Sequence[Figure], solution) -> int:
             f"a solution is a Dissection, a dict, JSON text or a path, not {type(solution).__name__}"
         )
     return _dissect.verify(figures, text)
+
+
+# ``dissect.enumerate`` (the builtin stays ``builtins.enumerate`` in here).
+from ._enumerate import Enumeration, enumerate_dissections as enumerate  # noqa: E402,A001

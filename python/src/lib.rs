@@ -10,6 +10,7 @@
 
 use pyo3::prelude::*;
 
+mod enumerate;
 mod errors;
 mod figure;
 mod run;
@@ -24,6 +25,7 @@ fn _dissect(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(solve::verify, m)?)?;
     m.add_function(wrap_pyfunction!(solve::solution_json, m)?)?;
     m.add_function(wrap_pyfunction!(solve::option_names, m)?)?;
+    m.add_function(wrap_pyfunction!(enumerate::enumerate, m)?)?;
     m.add("LATTICES", lattice_names())?;
     Ok(())
 }
