@@ -160,7 +160,7 @@ pub fn enumerate(
             }
         }
     }
-    let before_unique = config.unique.then(|| (dissections.len(), classes.len()));
+    let before_unique = config.unique.then_some((dissections.len(), classes.len()));
     // Classes are numbered in the order of their first dissection.
     let dissections: Vec<Verified> = dissections
         .into_iter()
