@@ -4,14 +4,14 @@
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use dissect_engine::{EnumerateConfig, EnumerateError, Rank};
+use dissect_engine::{EnumerateConfig, Rank};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde_json::{json, Map};
 
 use crate::errors::{error, Kind};
 use crate::figure::PyFigure;
-use crate::run::{deadline, watched};
+use crate::run::{time_limit as checked_limit, watched};
 use crate::solve::{pieces_to_py, problem};
 
 /// Counts every dissection with `pieces` pieces (the minimum, proved
@@ -30,7 +30,8 @@ pub(crate) fn enumerate<'py>(
     let (figs, names) = problem(py, &figures)?;
     let lattice = figs[0].lattice();
     let mirror = mirror && lattice.lattice().supports_mirror();
-    let limit = deadline(time_limit).map_err(|m| error(py, Kind::Option, m))?;
+    let time_limit = checked_limit(time_limit).map_err(|m| error(py, Kind::Option, m))?;
+    let limit = time_limit.deadline();
     if pieces == Some(0) {
         return Err(error(py, Kind::Option, "pieces must be at least 1, got 0"));
     }
@@ -52,10 +53,9 @@ pub(crate) fn enumerate<'py>(
     let run = watched(py, &stop, limit, || {
         dissect_engine::enumerate(&figs, &names, &config, &stop, &())
     })?;
-    let report = run.value.map_err(|e| match e {
-        EnumerateError::Options(e) => error(py, Kind::Option, e.to_string()),
-        e => error(py, Kind::Problem, e.to_string()),
-    })?;
+    let report = run
+        .value
+        .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
     let out = PyDict::new(py);
     out.set_item("pieces", report.pieces)?;
     out.set_item("minimum", report.minimum)?;

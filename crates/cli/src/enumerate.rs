@@ -14,8 +14,8 @@ use anyhow::Result;
 use clap::Args;
 use dissect_core::LatticeKind;
 use dissect_engine::{
-    EngineError, EnumerateConfig, EnumerateError, EnumerateEvent, EnumerateObserver,
-    EnumerationReport, Rank,
+    EngineError, EnumerateConfig, EnumerateEvent, EnumerateObserver, EnumerationReport, Rank,
+    TimeLimit,
 };
 use serde_json::{json, Map};
 
@@ -37,7 +37,7 @@ pub struct EnumerateArgs {
     pub pieces: Option<usize>,
     /// Stop after this many seconds and report the dissections found so far.
     #[arg(long, value_name = "SECS")]
-    pub time_limit: Option<f64>,
+    pub time_limit: Option<TimeLimit>,
     /// Write one solution file per class up to symmetry: DIR/1.json, DIR/2.json, ... (DIR is created if missing).
     #[arg(short = 'o', long = "output", value_name = "DIR")]
     pub output: Option<PathBuf>,
@@ -146,7 +146,7 @@ pub fn run(args: EnumerateArgs) -> Result<Status> {
     let config = EnumerateConfig {
         mirror: !args.no_mirror,
         pieces: args.pieces,
-        time_limit: args.time_limit,
+        time_limit: args.time_limit.unwrap_or_default(),
         rank: args.rank,
         unique: args.unique,
     };
@@ -154,10 +154,7 @@ pub fn run(args: EnumerateArgs) -> Result<Status> {
     display.clear();
     let report = match report {
         Ok(r) => r,
-        Err(e @ EnumerateError::Options(_)) => return Err(InputError(e.to_string()).into()),
-        Err(EnumerateError::Engine(e @ EngineError::Figures(_))) => {
-            return Err(InputError(e.to_string()).into())
-        }
+        Err(e @ EngineError::Figures(_)) => return Err(InputError(e.to_string()).into()),
         Err(e) => return Err(e.into()),
     };
     if let Some(dir) = &args.output {

@@ -10,19 +10,7 @@ use dissect_core::Figure;
 use dissect_exact::{Bound, EnumerateObserver, EnumerateOptions, Limit};
 use dissect_puzzle::{Motions, Rank, Scores};
 
-use crate::{EngineError, OptionsError, Verified};
-
-/// Occurs when an enumeration cannot run.
-#[derive(Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum EnumerateError {
-    /// A setting is out of range (the time limit).
-    #[error(transparent)]
-    Options(#[from] OptionsError),
-    /// The figures are not a dissection problem, or a search failed.
-    #[error(transparent)]
-    Engine(#[from] EngineError),
-}
+use crate::{EngineError, TimeLimit, Verified};
 
 /// What a front end asks of [`enumerate`].
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -33,9 +21,8 @@ pub struct EnumerateConfig {
     /// Count the dissections with exactly this many pieces (`None`: the
     /// minimum, proved first).
     pub pieces: Option<usize>,
-    /// Seconds before the enumeration stops with what it found (`None`:
-    /// none; must be >= 0).
-    pub time_limit: Option<f64>,
+    /// How long before the enumeration stops with what it found.
+    pub time_limit: TimeLimit,
     /// The order of the classes (`None`: the order they were found).
     pub rank: Option<Rank>,
     /// Keep only the dissections whose pieces tile every figure in a
@@ -89,16 +76,10 @@ pub fn enumerate(
     config: &EnumerateConfig,
     stop: &AtomicBool,
     observer: &dyn EnumerateObserver,
-) -> Result<EnumerationReport, EnumerateError> {
+) -> Result<EnumerationReport, EngineError> {
     let start = Instant::now();
-    let deadline = match config.time_limit {
-        None => None,
-        Some(t) if t.is_nan() || t < 0.0 => return Err(OptionsError::TimeLimit(t).into()),
-        Some(t) => Duration::try_from_secs_f64(t)
-            .ok()
-            .and_then(|d| start.checked_add(d)),
-    };
-    dissect_core::solver::check_figures(figures).map_err(EngineError::from)?;
+    let deadline = config.time_limit.deadline_from(start);
+    dissect_core::solver::check_figures(figures)?;
     let found = dissect_exact::enumerate(
         figures,
         &EnumerateOptions {
@@ -109,8 +90,7 @@ pub fn enumerate(
         },
         stop,
         observer,
-    )
-    .map_err(EngineError::from)?;
+    )?;
     let lattice = figures[0].lattice();
     let motions = Motions::new(lattice, config.mirror);
     let mirror = motions.mirror();

@@ -1,6 +1,8 @@
 //! The engine of `dissect`: one run, the same for every front end (CLI, web
 //! studio, bench, Python).
 //!
+//! * [`TimeLimit`]: how long any operation may run, parsed once by one
+//!   rule for every front end; [`check_threads`]: the thread count's rule.
 //! * [`RunOptions`]: every solver setting, validated once
 //!   ([`RunOptions::new`] from a plain [`RunConfig`], [`OptionsError`]).
 //! * [`run`]: the time limit and the stop flag (the only deadline of the
@@ -29,6 +31,8 @@
 //! prints.
 
 mod enumerate;
+mod limits;
+mod monitor;
 mod options;
 mod repair;
 mod report;
@@ -38,9 +42,8 @@ mod verified;
 pub use dissect_exact::{EnumerateEvent, EnumerateObserver};
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
-pub use enumerate::{
-    enumerate, EnumerateConfig, EnumerateError, EnumeratedClass, EnumerationReport,
-};
+pub use enumerate::{enumerate, EnumerateConfig, EnumeratedClass, EnumerationReport};
+pub use limits::{check_threads, LimitError, TimeLimit, MAX_THREADS};
 pub use options::{
     OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS,
     PLATEAU_IDLE_ROUNDS,

@@ -5,7 +5,7 @@ use std::sync::atomic::AtomicBool;
 
 use dissect_core::io::parse_figure;
 use dissect_core::{Figure, LatticeKind};
-use dissect_engine::{enumerate, EnumerateConfig, EnumerateError, Rank};
+use dissect_engine::{enumerate, EnumerateConfig, Rank, TimeLimit};
 
 fn figures(texts: &[&str]) -> Vec<Figure> {
     texts
@@ -70,7 +70,7 @@ fn the_minimum_is_proved_and_limits_are_honoured() {
     assert!(r.complete && r.minimum);
     assert_eq!((r.pieces, r.dissections.len(), r.classes.len()), (2, 1, 1));
     let past = EnumerateConfig {
-        time_limit: Some(0.0),
+        time_limit: TimeLimit::new(0.0).expect("a limit"),
         ..config.clone()
     };
     assert!(

@@ -1,5 +1,11 @@
 //! Every dissection with K pieces, counted: `dissect enumerate`.
 //!
+//! Without a K the minimum is proved on the way, as `solve --exact` proves
+//! it, level by level from the cheap bound: the model for exactly K pieces
+//! that has no model refutes K (and, with the levels below, every count up
+//! to K); the first K with a model is the minimum, and its enumeration
+//! goes on to the end.
+//!
 //! Two dissections are *the same* when they cut the first figure into the
 //! same pieces (how the pieces then tile the other figures does not matter:
 //! a cut that tiles them in several ways is one dissection). The SAT model of
@@ -27,21 +33,18 @@
 //! the SAT solver is asked once per class, not once per dissection.
 
 use std::collections::{HashMap, HashSet};
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use dissect_core::{Cell, Figure};
 
-use crate::bound::{cheap, Bound};
+use crate::bound::{cheap, Bound, Reason};
 use crate::connectivity_cut::cuts;
 use crate::motion::MotionSet;
 use crate::placement_encoding::{encode, estimate, Encoding, EncodingSize};
 use crate::reachability_encoding::{add_connectivity, connectivity_size};
 use crate::sat_backend::Sat;
-use crate::search::{
-    model_inputs_from, search, ExactEvent, ExactObserver, ExactOptions, Limit, Mode,
-    DEFAULT_MAX_ENCODING_BYTES,
-};
+use crate::search::{model_inputs_from, ExactEvent, Limit, DEFAULT_MAX_ENCODING_BYTES};
 use crate::ExactError;
 
 /// Settings of [`enumerate`].
@@ -75,10 +78,11 @@ impl Default for EnumerateOptions {
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum EnumerateEvent {
-    /// An event of the search for the minimum piece count.
+    /// On the way to the minimum: a piece count with no dissection
+    /// ([`ExactEvent::Refuted`], the bound rose).
     Search(ExactEvent),
-    /// The minimum piece count is proved: every dissection with it is
-    /// counted next.
+    /// The minimum piece count is proved (its first dissection was found,
+    /// every count below is refuted): every dissection with it is counted.
     Minimum {
         /// K.
         pieces: usize,
@@ -140,19 +144,12 @@ pub struct Enumeration {
     pub conflicts: u64,
 }
 
-/// Forwards the minimum search's events.
-struct Forward<'a>(&'a dyn EnumerateObserver);
-
-impl ExactObserver for Forward<'_> {
-    fn on_event(&self, event: &ExactEvent) {
-        self.0.on_event(&EnumerateEvent::Search(event.clone()));
-    }
-}
-
 /// Counts every dissection of `figures` with K pieces (K from
-/// [`EnumerateOptions::pieces`], else the minimum, proved first by
-/// [`search`] in [`Mode::Minimum`]), and their classes up to the first
-/// figure's symmetries. Raising `stop` or passing the deadline ends it with
+/// [`EnumerateOptions::pieces`], else the minimum: the enumeration runs for
+/// K = the cheap bound, the bound + 1, ... and the first K with a
+/// dissection is the minimum, every count below refuted by an
+/// unsatisfiable model), and their classes up to the first figure's
+/// symmetries. Raising `stop` or passing the deadline ends it with
 /// what was found (`complete` false).
 pub fn enumerate(
     figures: &[Figure],
@@ -162,51 +159,12 @@ pub fn enumerate(
 ) -> Result<Enumeration, ExactError> {
     let start = Instant::now();
     dissect_core::solver::check_figures(figures)?;
-    let (k, lower_bound) = match options.pieces {
-        Some(k) => {
-            let bound = crate::cheap_bound(figures, options.mirror)?;
-            (k, bound)
-        }
-        None => {
-            let upper = AtomicUsize::new(usize::MAX);
-            let found = search(
-                figures,
-                &ExactOptions {
-                    mirror: options.mirror,
-                    mode: Mode::Minimum,
-                    deadline: options.deadline,
-                    max_encoding_bytes: options.max_encoding_bytes,
-                    ..ExactOptions::default()
-                },
-                stop,
-                &upper,
-                &Forward(observer),
-            )?;
-            let minimum = found.found.as_ref().filter(|_| found.optimal());
-            let Some(pieces) = minimum.map(|p| p[0].len()) else {
-                return Ok(Enumeration {
-                    pieces: found.lower_bound.value,
-                    minimum: false,
-                    lower_bound: found.lower_bound,
-                    dissections: Vec::new(),
-                    class_of: Vec::new(),
-                    classes: 0,
-                    complete: false,
-                    limit: found.limit,
-                    conflicts: found.conflicts,
-                });
-            };
-            observer.on_event(&EnumerateEvent::Minimum {
-                pieces,
-                seconds: start.elapsed().as_secs_f64(),
-            });
-            (pieces, found.lower_bound)
-        }
-    };
+    let cheap_bound = crate::cheap_bound(figures, options.mirror)?;
+    let mut k = options.pieces.unwrap_or(cheap_bound.value);
     let mut out = Enumeration {
         pieces: k,
-        minimum: options.pieces.is_none(),
-        lower_bound,
+        minimum: false,
+        lower_bound: cheap_bound,
         dissections: Vec::new(),
         class_of: Vec::new(),
         classes: 0,
@@ -214,16 +172,40 @@ pub fn enumerate(
         limit: None,
         conflicts: 0,
     };
-    let mut run = Run {
-        figures,
-        options,
-        stop,
-        observer,
-        start,
-        canonical: HashMap::new(),
-        out: &mut out,
-    };
-    run.at(k)?;
+    let cells = figures[0].len();
+    loop {
+        let level = Instant::now();
+        let mut run = Run {
+            figures,
+            options,
+            stop,
+            observer,
+            start,
+            canonical: HashMap::new(),
+            out: &mut out,
+        };
+        run.at(k)?;
+        let none = out.complete && out.dissections.is_empty();
+        if options.pieces.is_some() || !none || k >= cells {
+            break;
+        }
+        // No dissection with exactly k pieces, nor (by the levels below
+        // and the cheap bound) with fewer: the bound rises.
+        out.lower_bound = Bound {
+            value: k + 1,
+            reason: Reason::Sat {
+                refuted: k,
+                seconds: level.elapsed().as_secs_f64(),
+                cuts: 0,
+            },
+        };
+        observer.on_event(&EnumerateEvent::Search(ExactEvent::Refuted(
+            out.lower_bound.clone(),
+        )));
+        k += 1;
+        out.pieces = k;
+        out.complete = false;
+    }
     Ok(out)
 }
 
@@ -367,6 +349,18 @@ impl Run<'_> {
         fixed: &[usize],
         found: &[Vec<Vec<Cell>>],
     ) -> Result<(), ExactError> {
+        if self.out.dissections.is_empty() && self.options.pieces.is_none() {
+            // Every count below is refuted: this one is the minimum.
+            self.out.minimum = true;
+            self.out.lower_bound = Bound {
+                value: enc.k,
+                reason: self.out.lower_bound.reason.clone(),
+            };
+            self.observer.on_event(&EnumerateEvent::Minimum {
+                pieces: enc.k,
+                seconds: self.start.elapsed().as_secs_f64(),
+            });
+        }
         let mut seen = HashSet::new();
         for t in &cut_of.symmetries {
             let image: Option<Vec<Vec<Cell>>> = found[0]
