@@ -19,6 +19,7 @@ search's explorations, on a Ray cluster.
 
 from __future__ import annotations
 
+import builtins
 import json
 import os
 from typing import (
@@ -52,6 +53,8 @@ __all__ = [
     "LowerBound",
     "solve",
     "bound",
+    "enumerate",
+    "Enumeration",
     "verify",
     "read_figure",
     "piece_colour",
@@ -323,7 +326,7 @@ def _figures(figures: Any) -> List[Figure]:
     if isinstance(figures, (Figure, str, bytes)):
         raise ProblemError("figures must be a list of at least two dissect.Figure")
     out: List[Figure] = []
-    for i, f in enumerate(figures):
+    for i, f in builtins.enumerate(figures):
         if not isinstance(f, Figure):
             raise ProblemError(
                 f"figure {i + 1} is a {type(f).__name__}, not a dissect.Figure "
@@ -445,3 +448,7 @@ def verify(
             f"a solution is a Dissection, a dict, JSON text or a path, not {type(solution).__name__}"
         )
     return _dissect.verify(figures, text)
+
+
+# ``dissect.enumerate`` (the builtin stays ``builtins.enumerate`` in here).
+from ._enumerate import Enumeration, enumerate_dissections as enumerate  # noqa: E402,A001

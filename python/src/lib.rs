@@ -11,6 +11,7 @@
 use pyo3::prelude::*;
 
 mod assemblies;
+mod enumerate;
 mod errors;
 mod figure;
 mod picture;
@@ -37,6 +38,7 @@ fn _dissect(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "RANKS",
         dissect_engine::Rank::ALL.map(|r| r.name()).to_vec(),
     )?;
+    m.add_function(wrap_pyfunction!(enumerate::enumerate, m)?)?;
     m.add("LATTICES", lattice_names())?;
     Ok(())
 }

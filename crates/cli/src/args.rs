@@ -43,6 +43,8 @@ pub enum Command {
     Assemblies(crate::assemblies::AssembliesArgs),
     /// Take each 3D figure of a solution apart by straight moves: the plan and its level, or the locked pieces.
     Disassemble(crate::disassemble::DisassembleArgs),
+    /// Count every dissection with the fewest pieces (or --pieces K), complete, up to the first figure's symmetries.
+    Enumerate(crate::enumerate::EnumerateArgs),
 }
 
 /// A thread count from 0 (one per core) to the engine's

@@ -3,6 +3,7 @@
 mod args;
 mod assemblies;
 mod disassemble;
+mod enumerate;
 mod info;
 mod input;
 mod output;
@@ -55,6 +56,7 @@ fn main() -> ExitCode {
         args::Command::Voxelize(a) => render::voxelize(a),
         args::Command::Assemblies(a) => assemblies::run(a),
         args::Command::Disassemble(a) => disassemble::run(a),
+        args::Command::Enumerate(a) => enumerate::run(a),
     };
     match result {
         Ok(Status::Ok) => ExitCode::SUCCESS,

@@ -19,6 +19,8 @@ mod bad_input;
 mod disassemble;
 #[path = "cli/display.rs"]
 mod display;
+#[path = "cli/enumerate.rs"]
+mod enumerate;
 #[path = "cli/exit_codes.rs"]
 mod exit_codes;
 #[path = "cli/hostile.rs"]

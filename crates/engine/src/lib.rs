@@ -22,6 +22,9 @@
 //! * [`disassemble()`]: whether each figure of a dissection can be taken
 //!   apart by straight moves (the plan, its level), within a time limit
 //!   and a stop flag.
+//! * [`enumerate()`]: every dissection with K pieces (the minimum, proved,
+//!   unless K is given), each [`Verified`], in classes up to the first
+//!   figure's symmetries, with the time limit and the stop flag.
 //! * [`EngineObserver`]: live events (level progress, improvements, bounds).
 //! * Puzzle runs ([`RunConfig::solutions`], [`RunConfig::rank`],
 //!   [`RunConfig::constraints`]): every candidate of the heuristic is judged
@@ -38,6 +41,7 @@
 mod assemblies;
 mod bound;
 mod disassemble;
+mod enumerate;
 mod limits;
 mod monitor;
 mod options;
@@ -49,9 +53,11 @@ mod verified;
 pub use assemblies::{assemblies, AssemblyEvent, CountError};
 pub use bound::{bound, BoundConfig, BoundReport};
 pub use disassemble::disassemble;
+pub use dissect_exact::{EnumerateEvent, EnumerateObserver};
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
 pub use dissect_puzzle::disassembly::{Disassembly, DisassemblyError, Plan as DisassemblyPlan};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
+pub use enumerate::{enumerate, EnumerateConfig, EnumeratedClass, EnumerationReport};
 pub use limits::{check_threads, LimitError, TimeLimit, MAX_THREADS};
 pub use options::{
     OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS,

@@ -517,7 +517,20 @@ fn model_inputs(
     mirror: bool,
     cheap: &mut Cheap,
 ) -> Option<(Instance, Vec<usize>, Vec<Incompatibility>)> {
-    let reference = if cheap.clique.len() >= 2 {
+    model_inputs_from(figures, mirror, cheap, false)
+}
+
+/// [`model_inputs`]; with `first` the reference shape is always input
+/// figure 0 (the clique is used only when it lies there).
+pub(crate) fn model_inputs_from(
+    figures: &[Figure],
+    mirror: bool,
+    cheap: &mut Cheap,
+    first: bool,
+) -> Option<(Instance, Vec<usize>, Vec<Incompatibility>)> {
+    let reference = if first {
+        0
+    } else if cheap.clique.len() >= 2 {
         cheap.clique_figure
     } else {
         0
@@ -620,7 +633,7 @@ pub fn dimacs_within(
 }
 
 /// Cell indices per shape to sorted cells per figure, in input order.
-fn to_cells(inst: &Instance, pieces: &[Vec<Vec<usize>>]) -> Vec<Vec<Vec<Cell>>> {
+pub(crate) fn to_cells(inst: &Instance, pieces: &[Vec<Vec<usize>>]) -> Vec<Vec<Vec<Cell>>> {
     let per_shape: Vec<Vec<Vec<Cell>>> = pieces
         .iter()
         .zip(&inst.shapes)

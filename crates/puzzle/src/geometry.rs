@@ -219,6 +219,35 @@ impl Motions {
         out
     }
 
+    /// The canonical form of a cut of a region into pieces (each a list of
+    /// cells) under `symmetries`, motions that map the region onto itself
+    /// ([`Motions::symmetries_of`]): the smallest image, each piece sorted
+    /// and the pieces sorted. Two cuts of the region are the same up to its
+    /// symmetries exactly when their canonical forms are equal; the
+    /// identity among `symmetries` makes the cut itself a candidate.
+    pub fn canonical_cut(&self, symmetries: &[Transform], pieces: &[Vec<Cell>]) -> Vec<Vec<Cell>> {
+        let image = |m: Option<&Transform>| {
+            let mut out: Vec<Vec<Cell>> = pieces
+                .iter()
+                .map(|p| {
+                    let mut cells: Vec<Cell> = p
+                        .iter()
+                        .map(|&c| m.map_or(Some(c), |m| self.move_cell(m, c)).unwrap_or(c))
+                        .collect();
+                    cells.sort_unstable();
+                    cells
+                })
+                .collect();
+            out.sort_unstable();
+            out
+        };
+        symmetries
+            .iter()
+            .map(|m| image(Some(m)))
+            .min()
+            .unwrap_or_else(|| image(None))
+    }
+
     /// Applies a motion to a cell (`None` when the image is not a cell).
     pub fn move_cell(&self, motion: &Transform, cell: Cell) -> Option<Cell> {
         let l = self.geometry();
