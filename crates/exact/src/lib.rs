@@ -26,6 +26,7 @@ pub mod bound;
 pub(crate) mod component_count;
 pub(crate) mod connectivity_cut;
 pub(crate) mod constraint_encoding;
+pub(crate) mod extent_clique;
 pub(crate) mod incompatible_clique;
 pub(crate) mod instance;
 pub mod motion;
