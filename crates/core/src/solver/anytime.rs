@@ -203,8 +203,20 @@ impl<'r, 'a> Run<'r, 'a> {
                 if search.stopped() {
                     break 'styles;
                 }
-                let mut cand =
-                    greedy::greedy(&search.problem, greedy::GreedyStyle { pivot, divisor });
+                let style = greedy::GreedyStyle { pivot, divisor };
+                // The first dissection is always finished; later ones stop
+                // with the run.
+                let never = AtomicBool::new(false);
+                let stop = if self.inc.pieces().is_some() {
+                    search.stop
+                } else {
+                    &never
+                };
+                let Some(mut cand) =
+                    search.install(|| greedy::greedy_until(&search.problem, style, stop))
+                else {
+                    break 'styles;
+                };
                 let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
                 debug_assert!(score.valid, "the greedy dissection is valid");
                 search.judge(&cand, &mut score);
@@ -230,7 +242,8 @@ impl<'r, 'a> Run<'r, 'a> {
             if search.stopped() {
                 break;
             }
-            for plan in sectors::plans(&search.problem, pivot) {
+            let plans = search.install(|| sectors::plans(&search.problem, pivot));
+            for plan in plans {
                 // Another frame often gives the same sectors.
                 if search.stopped() || tried.contains(&plan) {
                     continue;
