@@ -1,25 +1,26 @@
 #!/usr/bin/env bash
 # The acceptance command lines of issues 3 and 4, run as written on the
-# quick shared instances: `dissect solve --seed 1 --time-limit 300` must exit
+# quick instances of instances/: `dissect solve --seed 1 --time-limit 300` must exit
 # 0 at the manifest's reference piece count, and both `dissect verify` and
-# ../shared/tools/verify.py must accept what it wrote. Takes a few seconds.
+# the independent checkers (.ci/lib/check.sh) must accept what it wrote. Takes a few seconds.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+. .ci/lib/check.sh
 cargo build -q -p dissect-cli --release
 bin=${CARGO_TARGET_DIR:-target}/release/dissect
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-shared=../shared/instances
+instances=instances
 check() { # lattice instance
   local lattice=$1 inst=$2
-  local a=$shared/$inst/a.txt b=$shared/$inst/b.txt sol=$out/$inst.json
+  local a=$instances/$inst/a.txt b=$instances/$inst/b.txt sol=$out/$inst.json
   local ref
-  ref=$(python3 -c "import json,sys; print(next(m['reference'] for m in json.load(open('$shared/manifest.json')) if m['name']=='$inst'))")
+  ref=$(python3 -c "import json,sys; print(next(m['reference'] for m in json.load(open('$instances/manifest.json')) if m['name']=='$inst'))")
   "$bin" solve --lattice "$lattice" --seed 1 --time-limit 300 -q "$a" "$b" -o "$sol"
   "$bin" verify --lattice "$lattice" --solution "$sol" "$a" "$b" >/dev/null
   local res
-  res=$(python3 ../shared/tools/verify.py --lattice "$lattice" --solution "$sol" "$a" "$b" | tail -1)
-  [ "$res" = "valid: $ref pieces" ] || { echo "$inst: expected $ref pieces, verify.py says: $res"; exit 1; }
+  res=$(check_solution "$lattice" "$sol" "$a" "$b")
+  [ "$res" = "valid: $ref pieces" ] || { echo "$inst: expected $ref pieces, the checkers say: $res"; exit 1; }
   echo "$inst ($lattice): $res"
 }
 check square rect10x7-hole-to-square8

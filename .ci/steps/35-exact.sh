@@ -1,21 +1,22 @@
 #!/usr/bin/env bash
-# The exact mode (issue 6) on the shared instances, as its contract writes
+# The exact mode (issue 6) on the instances of instances/, as its contract writes
 # it: `dissect bound` must end with the lower bounds of the issue's table
 # (each well within 120 s), and `dissect solve --exact` must find verified
 # optimal dissections of squares-3-4-split-to-5 (4) and
 # tri-triangle8-to-rect4x8 (2). About 15 s.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+. .ci/lib/check.sh
 cargo build -q -p dissect-cli --release
 bin=${CARGO_TARGET_DIR:-target}/release/dissect
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-shared=../shared/instances
+instances=instances
 bound() { # instance expected-bound max-pieces lattice
   local inst=$1 want=$2 max=$3 lattice=$4
   local last
   last=$("$bin" bound -q --lattice "$lattice" --max-pieces "$max" --time-limit 120 \
-    "$shared/$inst/a.txt" "$shared/$inst/b.txt" | tail -1)
+    "$instances/$inst/a.txt" "$instances/$inst/b.txt" | tail -1)
   case "$last" in
     "lower bound: $want ("*) echo "$inst: $last" ;;
     *) echo "$inst: expected lower bound $want, got: $last"; exit 1 ;;
@@ -32,16 +33,15 @@ exact() { # instance lattice pieces
   local inst=$1 lattice=$2 want=$3 sol=$out/$1.json
   local last
   last=$("$bin" solve --exact -q --lattice "$lattice" --time-limit 120 \
-    "$shared/$inst/a.txt" "$shared/$inst/b.txt" -o "$sol" | tail -1)
+    "$instances/$inst/a.txt" "$instances/$inst/b.txt" -o "$sol" | tail -1)
   case "$last" in
     "$want pieces — optimal"*) ;;
     *) echo "$inst: expected an optimal $want-piece dissection, got: $last"; exit 1 ;;
   esac
   local res
-  res=$(python3 ../shared/tools/verify.py --lattice "$lattice" --solution "$sol" \
-    "$shared/$inst/a.txt" "$shared/$inst/b.txt" | tail -1)
-  [ "$res" = "valid: $want pieces" ] || { echo "$inst: verify.py says: $res"; exit 1; }
-  echo "$inst: $last; verify.py: $res"
+  res=$(check_solution "$lattice" "$sol" "$instances/$inst/a.txt" "$instances/$inst/b.txt")
+  [ "$res" = "valid: $want pieces" ] || { echo "$inst: the checkers say: $res"; exit 1; }
+  echo "$inst: $last; checkers: $res"
 }
 exact squares-3-4-split-to-5 square 4
 exact tri-triangle8-to-rect4x8 tri4 2

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # End-to-end check of `dissect render`, `rasterize`, `voxelize` and
 # `solve --render`: solve the built-in example, check it with
-# ../shared/tools/verify.py, write every output format, check the STL files
+# the independent checkers (.ci/lib/check.sh), write every output format, check the STL files
 # with an independent Python reader (closed, manifold, volume), and turn
 # pictures and meshes back into figures with exact cell counts. Seconds.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+. .ci/lib/check.sh
 root=$PWD
 target=${CARGO_TARGET_DIR:-$root/target}
 cargo build --release -p dissect-cli --quiet
@@ -16,7 +17,7 @@ trap 'rm -rf "$out"' EXIT
 a=examples/squares-3-4.txt
 b=examples/square-5.txt
 "$bin" solve "$a" "$b" --threads 2 --quiet -o "$out/sq.json" --render "$out/views"
-python3 ../shared/tools/verify.py --lattice square --solution "$out/sq.json" "$a" "$b" | tee "$out/v.txt"
+check_solution square "$out/sq.json" "$a" "$b" | tee "$out/v.txt"
 grep -q '^valid: ' "$out/v.txt"
 test -s "$out/views/dissection.svg" && test -s "$out/views/cut-sheet.svg"
 
@@ -70,7 +71,7 @@ for l in tri3 hex; do
   case $l in tri3) a2=$out/t-hexagon.txt b2=$out/t-bar.txt cell=43.30127018922193 ;;
              hex) a2=$out/h-hexagon.txt b2=$out/h-trapezoid.txt cell=86.60254037844386 ;; esac
   "$bin" solve --lattice $l "$a2" "$b2" --threads 2 --quiet --time-limit 10 -o "$out/$l.json"
-  python3 ../shared/tools/verify.py --lattice $l --solution "$out/$l.json" "$a2" "$b2" | grep -q '^valid: '
+  check_solution $l "$out/$l.json" "$a2" "$b2" | grep -q '^valid: '
   "$bin" render "$out/$l.json" --figures "$a2" "$b2" --format png -o "$out/$l.png"
   head -c 8 "$out/$l.png" | od -An -tx1 | grep -q '89 50 4e 47'
   "$bin" render "$out/$l.json" --figures "$a2" "$b2" --format html -o "$out/$l.html"
@@ -110,7 +111,7 @@ cat > "$out/cubic.json" <<'JSON'
  {"name":"cube.txt","pieces":[[[0,0,0],[1,0,0],[0,1,0],[1,1,0]],[[0,0,1],[1,0,1],[0,1,1],[1,1,1]]]},
  {"name":"slab.txt","pieces":[[[0,0,0],[1,0,0],[0,1,0],[1,1,0]],[[2,0,0],[3,0,0],[2,1,0],[3,1,0]]]}]}
 JSON
-python3 ../shared/tools/verify.py --lattice cubic --solution "$out/cubic.json" "$out/cube.txt" "$out/slab.txt" | grep -q '^valid: '
+check_solution cubic "$out/cubic.json" "$out/cube.txt" "$out/slab.txt" | grep -q '^valid: '
 "$bin" render "$out/cubic.json" --figures "$out/cube.txt" "$out/slab.txt" --format stl -o "$out/cstl" --clearance 0
 "$bin" voxelize "$out/cstl/piece-01-A.stl" --cells 4 -o "$out/v.txt"
 diff <(printf '##\n##\n') "$out/v.txt"

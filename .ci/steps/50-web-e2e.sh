@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end test of the browser studio: `dissect serve` on a free port,
 # crates/web/e2e/studio.test.mjs in Debian's headless chromium
-# (playwright-core), solutions checked with ../shared/tools/verify.py.
+# (playwright-core), solutions checked by crates/web/e2e/check.mjs
+# (tools/check_solution.py, and ../shared/tools/verify.py when present).
 # The tests write docs/studio-*.png and docs/motion-*.png (the motion
 # player and the shared HTML page: crates/web/e2e/motion.test.mjs); the
 # tri3 and hex studio: crates/web/e2e/lattices.test.mjs.

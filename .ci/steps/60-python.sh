@@ -3,7 +3,8 @@
 # (its own cargo workspace, so `cargo test --workspace` needs no Python),
 # then `pip install ./python[test,ray]` in a fresh virtual environment from
 # PyPI and this repository alone, and its pytest suite: figures, solve on
-# square/tri4/cubic checked by ../shared/tools/verify.py, errors, the same
+# square/tri4/cubic checked by tools/check_solution.py (and
+# ../shared/tools/verify.py when present), errors, the same
 # answer as the CLI, Ctrl-C, plotting (Agg), and Ray on a local 2-CPU
 # cluster. Versions are pinned in python/ci-requirements.txt. Takes about
 # 4 minutes (the Rust build of the extension is most of it).

@@ -19,11 +19,11 @@ import dissect
 import dissect.ray as dray
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SHARED = os.environ.get("DISSECT_SHARED", os.path.join(HERE, "..", "..", "..", "shared"))
+INSTANCES = os.environ.get("DISSECT_INSTANCES", os.path.join(HERE, "..", "..", "instances"))
 
 
 def figures(name, lattice):
-    d = os.path.join(SHARED, "instances", name)
+    d = os.path.join(INSTANCES, name)
     return [dissect.read_figure(os.path.join(d, f), lattice) for f in sorted(os.listdir(d)) if f.endswith(".txt")]
 
 

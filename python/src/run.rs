@@ -13,6 +13,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Condvar, Mutex};
 use std::time::{Duration, Instant};
 
+use dissect_engine::TimeLimit;
+
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 
@@ -84,16 +86,25 @@ pub(crate) fn watched<T: Send>(
     Ok(Watched { value, interrupted })
 }
 
-/// The instant `seconds` from now; None for no limit (None or infinity).
-/// Errors on NaN or negative values.
+/// The instant `seconds` from now; None for no limit (None, infinity, or
+/// more than a duration holds). Errors on NaN or negative values (the
+/// engine's [`TimeLimit`] rule, in Python's words).
 pub(crate) fn deadline(seconds: Option<f64>) -> Result<Option<Instant>, String> {
-    match seconds {
-        None => Ok(None),
-        Some(t) if t.is_nan() || t < 0.0 => Err(format!(
-            "time_limit must be a number of seconds >= 0, got {t}"
-        )),
-        Some(t) => Ok(Duration::try_from_secs_f64(t)
-            .ok()
-            .and_then(|d| Instant::now().checked_add(d))),
-    }
+    time_limit(seconds).map(TimeLimit::deadline)
+}
+
+/// `time_limit=` by the engine's [`TimeLimit`] rule; the error in Python's
+/// words (`time_limit must be ...`).
+pub(crate) fn time_limit(seconds: Option<f64>) -> Result<TimeLimit, String> {
+    TimeLimit::from_option(seconds).map_err(|e| e.to_string().replace("--time-limit", "time_limit"))
+}
+
+/// `threads=` by the engine's rule ([`dissect_engine::check_threads`]).
+pub(crate) fn threads(threads: usize) -> Result<usize, String> {
+    dissect_engine::check_threads(threads).map_err(|_| {
+        format!(
+            "threads={threads} is too many (at most {}; 0 means one per core)",
+            dissect_engine::MAX_THREADS
+        )
+    })
 }

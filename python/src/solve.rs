@@ -121,15 +121,10 @@ pub(crate) fn run_options(
     kwargs: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<RunOptions> {
     let bad = |m: String| error(py, Kind::Option, m);
-    if threads > 256 {
-        return Err(bad(format!(
-            "threads={threads} is too many (at most 256; 0 means one per core)"
-        )));
-    }
     let mut c = RunConfig {
         seed,
-        threads,
-        time_limit,
+        threads: crate::run::threads(threads).map_err(bad)?,
+        time_limit: crate::run::time_limit(time_limit).map_err(bad)?,
         ..RunConfig::default()
     };
     let (mut paper, mut exact) = (false, false);

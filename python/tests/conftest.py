@@ -1,9 +1,12 @@
-"""Shared helpers: the shared instances, the independent checker
-(../shared/tools/verify.py) and the `dissect` binary for CLI comparisons."""
+"""Shared helpers: the repository's benchmark instances (instances/), the
+independent checkers (tools/check_solution.py of this repository, and the
+external ../shared/tools/verify.py when present) and the `dissect` binary for
+CLI comparisons."""
 
 import os
 import subprocess
 import sys
+import warnings
 from pathlib import Path
 
 import pytest
@@ -11,30 +14,45 @@ import pytest
 import dissect
 
 REPO = Path(__file__).resolve().parents[2]
-SHARED = Path(os.environ.get("DISSECT_SHARED", REPO.parent / "shared"))
-INSTANCES = SHARED / "instances"
-VERIFY_PY = SHARED / "tools" / "verify.py"
+INSTANCES = REPO / "instances"
+CHECK_SOLUTION = REPO / "tools" / "check_solution.py"
+VERIFY_PY = Path(os.environ.get("DISSECT_VERIFY",
+                                REPO.parent / "shared" / "tools" / "verify.py"))
+_skipped = []
 
 
 def instance(name, lattice):
-    """The figures of a shared instance, named after their files."""
+    """The figures of an instance of instances/, named after their files."""
     d = INSTANCES / name
     files = sorted(p for p in d.iterdir() if p.suffix == ".txt")
     return [dissect.read_figure(p, lattice=lattice) for p in files], files
 
 
-def check_with_verify_py(dissection, files, tmp_path):
-    """Runs the external checker on the dissection's JSON; returns its last line."""
-    sol = tmp_path / "solution.json"
-    dissection.to_json(sol)
+def _run_checker(script, dissection, sol, files):
     r = subprocess.run(
-        [sys.executable, str(VERIFY_PY), "--lattice", dissection.lattice,
+        [sys.executable, str(script), "--lattice", dissection.lattice,
          "--solution", str(sol), *map(str, files)],
         capture_output=True, text=True,
     )
     last = (r.stdout.strip().splitlines() or [""])[-1]
-    assert r.returncode == 0, f"verify.py rejected the solution: {r.stdout}{r.stderr}"
+    assert r.returncode == 0, f"{script.name} rejected the solution: {r.stdout}{r.stderr}"
     assert last == f"valid: {dissection.piece_count} pieces", last
+    return last
+
+
+def check_with_verify_py(dissection, files, tmp_path):
+    """Checks the dissection's JSON with tools/check_solution.py and, when it
+    is present, the external verify.py (otherwise says once that it skipped
+    it); returns the last line."""
+    sol = tmp_path / "solution.json"
+    dissection.to_json(sol)
+    last = _run_checker(CHECK_SOLUTION, dissection, sol, files)
+    if VERIFY_PY.is_file():
+        _run_checker(VERIFY_PY, dissection, sol, files)
+    elif not _skipped:
+        _skipped.append(True)
+        # A warning, so that pytest's summary shows it once.
+        warnings.warn(f"{VERIFY_PY} not found: the external oracle's checks are skipped")
     return last
 
 

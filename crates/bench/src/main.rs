@@ -21,7 +21,9 @@ use dissect_core::{Dissection, Figure, LatticeKind};
 #[derive(Parser, Debug)]
 #[command(name = "dissect-bench", version)]
 struct Args {
-    /// Directory holding manifest.json and one directory per instance.
+    /// Directory holding manifest.json and one directory per instance (the
+    /// repository's `instances/` when run from its root).
+    #[arg(default_value = "instances")]
     instances: PathBuf,
     /// Exactly the paper's schedule (first valid level), as `dissect solve --paper`.
     #[arg(long)]

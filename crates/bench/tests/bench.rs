@@ -1,7 +1,7 @@
 //! Tests of the benchmark harness: the manifest, the scaler, timed and
 //! verified runs, the tables (golden files) and the binary end to end.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 use std::time::Duration;
 
@@ -18,11 +18,7 @@ use dissect_core::io::{format_figure, parse_figure};
 use dissect_core::solver::Options;
 use dissect_core::verify::verify_pieces;
 use dissect_core::{Figure, LatticeKind};
-
-/// `../shared` beside the repository.
-fn shared() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared")
-}
+use dissect_testkit::repo;
 
 fn fig(lattice: LatticeKind, text: &str) -> Figure {
     parse_figure(text, lattice).expect("test figure parses")
@@ -46,8 +42,8 @@ fn quick() -> Options {
 // ---------------------------------------------------------------- manifest
 
 #[test]
-fn shared_manifest_parses_and_every_instance_loads() {
-    let m = Manifest::load(&shared().join("instances")).expect("shared manifest");
+fn the_manifest_parses_and_every_instance_loads() {
+    let m = Manifest::load(&repo::instances()).expect("instances/manifest.json");
     let names: Vec<&str> = m.instances().iter().map(|i| i.name.as_str()).collect();
     for expected in [
         "rect10x7-hole-to-square8",
@@ -63,6 +59,8 @@ fn shared_manifest_parses_and_every_instance_loads() {
         "tri3-triangles-6-8-split-to-10",
         "tri3-hexagon2-to-parallelogram4x3",
         "hex-hexagon6-to-rhombus13x7",
+        "disc21-to-square37",
+        "torus512-to-slab16x8x4",
     ] {
         assert!(
             names.contains(&expected),
@@ -86,9 +84,8 @@ fn shared_manifest_parses_and_every_instance_loads() {
 
 #[test]
 fn the_projects_own_instances_load() {
-    // examples/instances: a voxelized torus mesh (make_torus.py) to a cuboid.
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/instances");
-    let m = Manifest::load(&root).expect("examples manifest");
+    // A voxelized torus mesh (instances/make_torus.py) to a cuboid.
+    let m = Manifest::load(&repo::instances()).expect("instances/manifest.json");
     let torus = m.get("torus512-to-slab16x8x4").expect("torus instance");
     let figures = torus.load_figures(m.root()).expect("torus loads");
     assert_eq!(torus.lattice(), LatticeKind::Cubic);
@@ -307,7 +304,7 @@ fn a_run_is_verified_and_reproducible() {
 
 #[test]
 fn the_time_limit_stops_a_run() {
-    let m = Manifest::load(&shared().join("instances")).expect("shared manifest");
+    let m = Manifest::load(&repo::instances()).expect("instances/manifest.json");
     let inst = m.get("sierpinski9-to-square8").expect("instance");
     let figures = inst.load_figures(m.root()).expect("loads");
     let r = run_seed(&figures, &quick(), Some(Duration::from_millis(30)));
@@ -495,7 +492,7 @@ fn tables_match_their_golden_files() {
 // -------------------------------------------------------------- end to end
 
 #[test]
-fn the_binary_runs_a_manifest_and_its_solutions_pass_verify_py() {
+fn the_binary_runs_a_manifest_and_its_solutions_pass_the_checkers() {
     let dir = tempfile::tempdir().expect("temp dir");
     let root = dir.path().join("instances");
     std::fs::create_dir_all(root.join("l-to-bar")).expect("mkdir");
@@ -526,17 +523,10 @@ fn the_binary_runs_a_manifest_and_its_solutions_pass_verify_py() {
     assert!(stdout.contains("| 2/2 |"), "{stdout}");
     assert!(stderr.contains("l-to-bar seed 2: 2 pieces"), "{stderr}");
     for seed in [1, 2] {
-        let v = Command::new("python3")
-            .arg(shared().join("tools/verify.py"))
-            .args(["--lattice", "square", "--solution"])
-            .arg(save.join(format!("l-to-bar-seed{seed}.json")))
-            .arg(root.join("l-to-bar/a.txt"))
-            .arg(root.join("l-to-bar/b.txt"))
-            .output()
-            .expect("python3 runs");
-        let text = String::from_utf8_lossy(&v.stdout);
-        assert!(v.status.success(), "{text}");
-        assert!(text.trim_end().ends_with("valid: 2 pieces"), "{text}");
+        let solution = save.join(format!("l-to-bar-seed{seed}.json"));
+        let figures = [root.join("l-to-bar/a.txt"), root.join("l-to-bar/b.txt")];
+        let n = repo::assert_checked(dir.path(), "square", &solution, &figures);
+        assert_eq!(n, 2);
     }
 }
 
@@ -745,7 +735,7 @@ fn the_replay_table_matches_its_golden_files() {
 fn a_recorded_run_times_every_exploration_it_counts() {
     use dissect_bench::run::{run_mode, Mode};
     use dissect_bench::schedule::replay_levels;
-    let m = Manifest::load(&shared().join("instances")).expect("shared manifest");
+    let m = Manifest::load(&repo::instances()).expect("instances/manifest.json");
     let inst = m.get("rect10x7-hole-to-square8").expect("instance");
     let figures = inst.load_figures(m.root()).expect("loads");
     let options = Options {
@@ -856,4 +846,18 @@ fn the_binary_replays_recorded_runs() {
     let out = run(&["--replay", "--threads", "2"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("one solver thread"));
+}
+
+#[test]
+fn the_binary_reads_the_repositorys_instances_by_default() {
+    let out = Command::new(env!("CARGO_BIN_EXE_dissect-bench"))
+        .current_dir(repo::root())
+        .args(["--only", "rect10x7-hole-to-square8", "--seeds", "1"])
+        .args(["--time-limit", "60", "--threads", "1"])
+        .output()
+        .expect("runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stdout}\n{stderr}");
+    assert!(stdout.contains("rect10x7-hole-to-square8"), "{stdout}");
 }

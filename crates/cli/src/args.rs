@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 use dissect_core::LatticeKind;
+use dissect_engine::TimeLimit;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -42,15 +43,11 @@ pub enum Command {
     Assemblies(crate::assemblies::AssembliesArgs),
 }
 
-/// A thread count from 0 (one per core) to 256.
+/// A thread count from 0 (one per core) to the engine's
+/// [`dissect_engine::MAX_THREADS`] ([`dissect_engine::check_threads`]).
 pub fn thread_count(s: &str) -> Result<usize, String> {
     let n = whole_usize::<0>(s)?;
-    if n > 256 {
-        return Err(format!(
-            "{n} threads is too many (at most 256; 0 means one per core)"
-        ));
-    }
-    Ok(n)
+    dissect_engine::check_threads(n).map_err(|e| e.to_string())
 }
 
 /// A whole number of at least `MIN`. Negative numbers reach this parser
@@ -128,7 +125,7 @@ pub struct SolveArgs {
     pub threads: usize,
     /// Stop after this many seconds and report the best dissection found so far.
     #[arg(long, value_name = "SECS")]
-    pub time_limit: Option<f64>,
+    pub time_limit: Option<TimeLimit>,
     /// Give up after trying this many pieces.
     #[arg(long, value_name = "K", value_parser = whole_usize::<0>)]
     pub max_pieces: Option<usize>,
@@ -289,7 +286,7 @@ impl SolveArgs {
             mirror: !self.no_mirror,
             seed: self.seed,
             threads: self.threads,
-            time_limit: self.time_limit,
+            time_limit: self.time_limit.unwrap_or_default(),
             max_pieces: self.max_pieces,
             area_weight: self.area_weight,
             explorations: self.explorations,

@@ -9,6 +9,7 @@ use std::time::{Duration, Instant};
 use anyhow::Result;
 use clap::Args;
 use dissect_core::LatticeKind;
+use dissect_engine::TimeLimit;
 use dissect_puzzle::assemblies::{count, report_line, AssemblyError, CountLimits, PieceSet};
 use dissect_puzzle::dlx::Progress;
 use dissect_puzzle::Motions;
@@ -16,6 +17,7 @@ use dissect_puzzle::Motions;
 use crate::{input, InputError, Status};
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct AssembliesArgs {
     /// The lattice (default: the solution's).
     #[arg(long)]
@@ -25,7 +27,7 @@ pub struct AssembliesArgs {
     pub solution: PathBuf,
     /// Stop counting after this many seconds in all and report what was found.
     #[arg(long, value_name = "SECS")]
-    pub time_limit: Option<f64>,
+    pub time_limit: Option<TimeLimit>,
     /// No progress on stderr.
     #[arg(long, short)]
     pub quiet: bool,
@@ -40,16 +42,7 @@ pub fn run(args: AssembliesArgs) -> Result<Status> {
     let (_, dissection) = input::solution(&args.solution)?;
     input::check_solution_lattice(&args.solution, dissection.lattice(), args.lattice)?;
     let lattice = dissection.lattice();
-    let deadline = match args.time_limit {
-        Some(t) if !(t.is_finite() && t > 0.0) => {
-            return Err(InputError(format!(
-                "--time-limit must be a number of seconds > 0, not {t}"
-            ))
-            .into())
-        }
-        Some(t) => Some(Instant::now() + Duration::from_secs_f64(t.min(1e9))),
-        None => None,
-    };
+    let deadline = args.time_limit.unwrap_or_default().deadline();
     let figures = input::figures(&args.figures, lattice)?;
     let pieces = dissection.pieces().first().cloned().unwrap_or_default();
     let set = PieceSet::new(Motions::new(lattice, dissection.mirror()), &pieces)

@@ -3,10 +3,11 @@
 
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use anyhow::Result;
 use dissect_core::LatticeKind;
+use dissect_engine::TimeLimit;
 use dissect_exact::{search, ExactEvent, ExactObserver, ExactOptions, Mode};
 
 use crate::{input, InputError, Status};
@@ -25,7 +26,7 @@ pub struct BoundArgs {
     pub no_mirror: bool,
     /// Stop after this many seconds and report the best bound proved so far.
     #[arg(long, value_name = "SECS")]
-    pub time_limit: Option<f64>,
+    pub time_limit: Option<TimeLimit>,
     /// Try to refute no more than this many pieces.
     #[arg(long, value_name = "K", value_parser = crate::args::whole_usize::<1>)]
     pub max_pieces: Option<usize>,
@@ -105,19 +106,6 @@ impl ExactObserver for Lines {
     }
 }
 
-fn check_time_limit(t: Option<f64>) -> Result<Option<Instant>> {
-    match t {
-        None => Ok(None),
-        Some(t) if t.is_finite() && t >= 0.0 => {
-            Ok(Some(Instant::now() + Duration::from_secs_f64(t)))
-        }
-        Some(t) => Err(InputError(format!(
-            "--time-limit must be a number of seconds >= 0, got {t}"
-        ))
-        .into()),
-    }
-}
-
 fn catch_ctrl_c() {
     // The first Ctrl-C stops the search (what is proved is kept), a second
     // one exits at once.
@@ -148,7 +136,7 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         );
         return Ok(Status::Ok);
     }
-    let deadline = check_time_limit(args.time_limit)?;
+    let deadline = args.time_limit.unwrap_or_default().deadline();
     catch_ctrl_c();
     let options = ExactOptions {
         mirror: !args.no_mirror,

@@ -123,7 +123,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         let why = match report.end {
             End::Interrupted => "interrupted (Ctrl-C)".to_string(),
             End::TimeLimit => format!(
-                "the time limit of {} s was reached",
+                "the time limit of {} was reached",
                 args.time_limit.unwrap_or_default()
             ),
             _ => match args.max_pieces {

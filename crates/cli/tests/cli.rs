@@ -3,7 +3,8 @@
 //!
 //! One test binary; every test runs the built binary in its own temporary
 //! folder (see `support`), and every solution it writes is checked by
-//! `dissect verify`, and in several tests by `shared/tools/verify.py` too.
+//! `dissect verify`, and in several tests by the repository's own
+//! `tools/check_solution.py` and the external `verify.py` (when present) too.
 
 #[path = "cli/support.rs"]
 mod support;
@@ -22,6 +23,8 @@ mod exit_codes;
 mod hostile;
 #[path = "cli/info.rs"]
 mod info;
+#[path = "cli/limits.rs"]
+mod limits;
 #[path = "cli/output.rs"]
 mod output;
 #[path = "cli/reproducibility.rs"]

@@ -1,6 +1,7 @@
 //! End-to-end tests of the exact mode: `dissect bound`, `dissect solve
 //! --exact` and `dissect solve --prove`. Every solution written is checked by
-//! `dissect verify` and by `shared/tools/verify.py`.
+//! `dissect verify`, by `tools/check_solution.py` and, when present, by the
+//! external `verify.py`.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -45,21 +46,10 @@ fn check_golden(name: &str, actual: &str) {
     assert_eq!(actual, expected, "differs from {}", path.display());
 }
 
+/// The independent checkers: `tools/check_solution.py` always, the
+/// external `verify.py` when present.
 fn python_verify(dir: &Path, lattice: &str, solution: &str, figures: &[&str]) {
-    let verifier = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/tools/verify.py");
-    let out = Command::new("python3")
-        .current_dir(dir)
-        .arg(verifier)
-        .args(["--lattice", lattice, "--solution", solution])
-        .args(figures)
-        .output()
-        .expect("python3 runs");
-    assert!(
-        out.status.success() && stdout(&out).contains("valid:"),
-        "verify.py: {} {}",
-        stdout(&out),
-        String::from_utf8_lossy(&out.stderr)
-    );
+    dissect_testkit::repo::assert_checked(dir, lattice, solution, figures);
 }
 
 #[test]

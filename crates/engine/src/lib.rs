@@ -1,6 +1,8 @@
 //! The engine of `dissect`: one run, the same for every front end (CLI, web
 //! studio, bench, Python).
 //!
+//! * [`TimeLimit`]: how long any operation may run, parsed once by one
+//!   rule for every front end; [`check_threads`]: the thread count's rule.
 //! * [`RunOptions`]: every solver setting, validated once
 //!   ([`RunOptions::new`] from a plain [`RunConfig`], [`OptionsError`]).
 //! * [`run`]: the time limit and the stop flag (the only deadline of the
@@ -25,6 +27,8 @@
 //! Architecture invariant: like the core, this crate does no I/O and never
 //! prints.
 
+mod limits;
+mod monitor;
 mod options;
 mod repair;
 mod report;
@@ -33,6 +37,7 @@ mod verified;
 
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
+pub use limits::{check_threads, LimitError, TimeLimit, MAX_THREADS};
 pub use options::{
     OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS,
     PLATEAU_IDLE_ROUNDS,

@@ -1,7 +1,8 @@
 //! The exact mode against a brute-force enumeration of every partition of
 //! small figures into connected pieces, on every lattice. Every dissection
 //! the SAT search reports is checked by `dissect_core::verify`, and one by
-//! the independent Python checker of `shared/tools/verify.py`.
+//! the independent checkers (`tools/check_solution.py`, and the external
+//! `verify.py` when present).
 
 use std::collections::HashSet;
 use std::sync::atomic::{AtomicBool, AtomicUsize};
@@ -373,7 +374,7 @@ fn a_raised_stop_flag_ends_the_search_with_what_is_proved() {
 }
 
 #[test]
-fn python_verifier_accepts_a_sat_dissection() {
+fn the_independent_checkers_accept_a_sat_dissection() {
     let texts = ["###\n#.#\n###", "####\n####"];
     let figs = figures(LatticeKind::Square, &texts);
     let exact = run(&figs, true, Mode::Minimum, None);
@@ -394,22 +395,10 @@ fn python_verifier_accepts_a_sat_dissection() {
     .unwrap();
     let sol = dir.path().join("s.json");
     std::fs::write(&sol, d.to_file(Default::default()).to_json()).unwrap();
-    let verifier =
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/tools/verify.py");
-    let out = std::process::Command::new("python3")
-        .arg(&verifier)
-        .args(["--lattice", "square", "--solution"])
-        .arg(&sol)
-        .args(&paths)
-        .output()
-        .expect("python3 runs");
-    let text = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "verify.py: {text} {}",
-        String::from_utf8_lossy(&out.stderr)
+    assert_eq!(
+        dissect_testkit::repo::assert_checked(dir.path(), "square", &sol, &paths),
+        2
     );
-    assert!(text.contains("valid: 2 pieces"), "verify.py said {text}");
 }
 
 /// Counts the connectivity events of a search.

@@ -22,14 +22,12 @@ fn square(texts: &[String]) -> Vec<Figure> {
         .collect()
 }
 
-fn shared(name: &str) -> Vec<Figure> {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/instances")
-        .join(name);
-    square(&[
-        std::fs::read_to_string(dir.join("a.txt")).expect("instance"),
-        std::fs::read_to_string(dir.join("b.txt")).expect("instance"),
-    ])
+/// The two figures of a square instance of the repository's `instances/`.
+fn instance(name: &str) -> Vec<Figure> {
+    let read = |file| {
+        std::fs::read_to_string(dissect_testkit::repo::instance_file(name, file)).expect("instance")
+    };
+    square(&[read("a.txt"), read("b.txt")])
 }
 
 fn run(figs: &[Figure], options: &ExactOptions, stop: &AtomicBool) -> ExactOutcome {
@@ -39,7 +37,7 @@ fn run(figs: &[Figure], options: &ExactOptions, stop: &AtomicBool) -> ExactOutco
 
 #[test]
 fn the_conflict_budget_ends_the_search_the_same_way_every_time() {
-    let figs = shared("sierpinski9-to-square8");
+    let figs = instance("sierpinski9-to-square8");
     let options = ExactOptions {
         conflict_budget: Some(1500),
         ..ExactOptions::default()
@@ -58,7 +56,7 @@ fn the_conflict_budget_ends_the_search_the_same_way_every_time() {
 
 #[test]
 fn restricted_passes_can_count_conflicts_instead_of_time() {
-    let figs = shared("squares-3-4-split-to-5");
+    let figs = instance("squares-3-4-split-to-5");
     let options = ExactOptions {
         mode: Mode::Minimum,
         restricted_conflicts: Some(200),
@@ -74,7 +72,7 @@ fn restricted_passes_can_count_conflicts_instead_of_time() {
 
 #[test]
 fn an_encoding_over_the_cap_is_refused_not_built() {
-    let figs = shared("sierpinski9-to-square8");
+    let figs = instance("sierpinski9-to-square8");
     let options = ExactOptions {
         max_encoding_bytes: 100_000,
         ..ExactOptions::default()
@@ -178,7 +176,7 @@ fn the_stop_flag_ends_the_cheap_bounds_on_big_figures() {
 fn a_deadline_stops_the_solver_and_the_connectivity_encoding() {
     // The 4-piece question on the Sierpinski carpet runs for long in the
     // solver (with connectivity added after its first split model).
-    let figs = shared("sierpinski9-to-square8");
+    let figs = instance("sierpinski9-to-square8");
     for secs in [1, 2] {
         let limit = Duration::from_secs(secs);
         let (took, outcome) = time_to_stop(&figs, limit, false);

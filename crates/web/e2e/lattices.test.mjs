@@ -3,23 +3,23 @@
 // the cell FORMAT.md puts there (the geometry below is the test's own, not
 // the page's), the rectangle and fill tools count cells, the shipped
 // example solves, every piece is drawn in its colour and the downloads are
-// made: solution and figures (checked by verify.py), SVG, PNG, STL, cut
+// made: solution and figures (checked by check.mjs), SVG, PNG, STL, cut
 // sheet and the HTML page; LDraw is off.
 //
-// Needs DISSECT_URL, DISSECT_VERIFY and DISSECT_DOCS (.ci/steps/50-web-e2e.sh).
+// Needs DISSECT_URL and DISSECT_DOCS, DISSECT_VERIFY when present
+// (.ci/steps/50-web-e2e.sh).
 
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
+import { checkSolution } from './check.mjs';
 
 const URL = process.env.DISSECT_URL;
-const VERIFY = process.env.DISSECT_VERIFY;
 const DOCS = process.env.DISSECT_DOCS;
-assert.ok(URL && VERIFY && DOCS, 'set DISSECT_URL, DISSECT_VERIFY and DISSECT_DOCS');
+assert.ok(URL && DOCS, 'set DISSECT_URL and DISSECT_DOCS');
 
 let browser;
 let page;
@@ -160,7 +160,7 @@ for (const lattice of ['tri3', 'hex']) {
     assert.equal(await count(1).textContent(), '15 cells');
     await page.locator('#figures').screenshot({ path: path.join(DOCS, `studio-${lattice}-editor.png`) });
 
-    // The shipped example: solved, drawn, downloaded, checked by verify.py.
+    // The shipped example: solved, drawn, downloaded, checked by the independent checkers (check.mjs).
     await page.selectOption('[data-testid=example]', EXAMPLES[lattice]);
     await page.waitForFunction((l) => window.studio.lattice === l && window.studio.figures.length === 2
       && window.studio.figures.every((f) => f.cells.size > 0), lattice);
@@ -195,7 +195,7 @@ for (const lattice of ['tri3', 'hex']) {
     const json = await saveDownload(() => page.click('[data-testid=download-json]'));
     const figs = [];
     for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
-    const out = execFileSync('python3', [VERIFY, '--lattice', lattice, '--solution', json, ...figs], { encoding: 'utf8' });
+    const out = checkSolution(lattice, json, figs);
     assert.match(out, new RegExp(`valid: ${pieces} pieces`));
     const svg = fs.readFileSync(await saveDownload(() => page.click('[data-testid=download-svg]')), 'utf8');
     assert.match(svg, /<svg[\s\S]*<\/svg>/);

@@ -1,21 +1,21 @@
 // End-to-end tests of the studio page in Debian's headless chromium.
 //
-// Needs a running `dissect serve` (DISSECT_URL), the independent checker
-// (DISSECT_VERIFY = path of shared/tools/verify.py) and a folder for the
-// screenshots (DISSECT_DOCS). .ci/steps/50-web-e2e.sh sets all three.
+// Needs a running `dissect serve` (DISSECT_URL) and a folder for the
+// screenshots (DISSECT_DOCS); solutions are checked by check.mjs (the
+// repository's tools/check_solution.py, and the external verify.py named by
+// DISSECT_VERIFY when present). .ci/steps/50-web-e2e.sh sets them.
 
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
+import { checkSolution } from './check.mjs';
 
 const URL = process.env.DISSECT_URL;
-const VERIFY = process.env.DISSECT_VERIFY;
 const DOCS = process.env.DISSECT_DOCS;
-assert.ok(URL && VERIFY && DOCS, 'set DISSECT_URL, DISSECT_VERIFY and DISSECT_DOCS');
+assert.ok(URL && DOCS, 'set DISSECT_URL and DISSECT_DOCS');
 
 let context;
 let page;
@@ -176,7 +176,7 @@ test('draw two figures, see the counts, solve, check the downloaded solution', a
   const solution = JSON.parse(fs.readFileSync(json, 'utf8'));
   assert.equal(solution.format, 'dissection-solution/1');
   assert.equal(solution.figures[0].pieces.length, pieces);
-  const out = execFileSync('python3', [VERIFY, '--lattice', 'square', '--solution', json, a, b], { encoding: 'utf8' });
+  const out = checkSolution('square', json, [a, b]);
   assert.match(out, new RegExp(`valid: ${pieces} pieces`));
 });
 
@@ -207,7 +207,7 @@ test('a shipped example solves with live progress; hovering a piece highlights i
   const json = await saveDownload(() => page.click('[data-testid=download-json]'));
   const figs = [];
   for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
-  const out = execFileSync('python3', [VERIFY, '--lattice', 'square', '--solution', json, ...figs], { encoding: 'utf8' });
+  const out = checkSolution('square', json, figs);
   assert.match(out, new RegExp(`valid: ${pieces} pieces`));
 
   // Pictures and meshes made by the server's renderer.
@@ -256,7 +256,7 @@ test('tri4: a click fills the triangle under the mouse; a tri4 solution is check
   await drag(1, [0, 0], [1, 0]);
   assert.equal(await count(1).textContent(), '8 cells');
 
-  // The shipped tri4 example: solved, drawn in triangles, checked by verify.py.
+  // The shipped tri4 example: solved, drawn in triangles, checked by the independent checkers (check.mjs).
   await page.selectOption('[data-testid=example]', 'tri-triangle8-to-rect4x8');
   await page.waitForFunction(() => window.studio.figures.length === 2 && window.studio.figures[1].cells.size === 128);
   await solveAndWait(30);
@@ -265,7 +265,7 @@ test('tri4: a click fills the triangle under the mouse; a tri4 solution is check
   const json = await saveDownload(() => page.click('[data-testid=download-json]'));
   const figs = [];
   for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
-  const out = execFileSync('python3', [VERIFY, '--lattice', 'tri4', '--solution', json, ...figs], { encoding: 'utf8' });
+  const out = checkSolution('tri4', json, figs);
   assert.match(out, new RegExp(`valid: ${pieces} pieces`));
   assert.ok(await page.isDisabled('[data-testid=download-ldraw]'), 'no LEGO triangles');
 });
@@ -293,7 +293,7 @@ test('cubic: layers are edited apart; the solution turns in 3D', async () => {
   const json = await saveDownload(() => page.click('[data-testid=download-json]'));
   const figs = [];
   for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
-  const out = execFileSync('python3', [VERIFY, '--lattice', 'cubic', '--solution', json, ...figs], { encoding: 'utf8' });
+  const out = checkSolution('cubic', json, figs);
   assert.match(out, new RegExp(`valid: ${pieces} pieces`));
   await page.waitForSelector('#motion canvas');
   const v3 = await page.locator('#motion canvas').boundingBox();
@@ -340,13 +340,13 @@ test('figure files load from disk; Stop ends a long solve and keeps what was fou
 
 // ------------------------------------------------------------- puzzles (issue 14)
 
-/** Downloads the JSON of the solution shown and checks it with verify.py against the figures. */
+/** Downloads the JSON of the solution shown and checks it against the figures (check.mjs). */
 async function verifyShown(lattice) {
   const json = await saveDownload(() => page.click('[data-testid=download-json]'));
   const figs = [];
   for (const i of [0, 1]) figs.push(await saveDownload(() => card(i).locator('button.save').click()));
   const solution = JSON.parse(fs.readFileSync(json, 'utf8'));
-  const out = execFileSync('python3', [VERIFY, '--lattice', lattice, '--solution', json, ...figs], { encoding: 'utf8' });
+  const out = checkSolution(lattice, json, figs);
   assert.match(out, new RegExp(`valid: ${solution.figures[0].pieces.length} pieces`));
   return solution;
 }

@@ -1,6 +1,6 @@
 //! `dissect solve` with the puzzle options: several solutions, their
 //! ranking, and the designer's constraints. Every solution written is
-//! checked by `dissect verify` and `shared/tools/verify.py`.
+//! checked by `dissect verify` and the independent checkers (`assert_valid`).
 
 use std::collections::HashSet;
 

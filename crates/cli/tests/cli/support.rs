@@ -8,16 +8,9 @@ use std::time::{Duration, Instant};
 
 use tempfile::TempDir;
 
-/// The `shared/` folder beside the repository.
-pub fn shared() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared")
-}
-
-/// A figure file of a shared benchmark instance.
+/// A figure file of a benchmark instance of the repository's `instances/`.
 pub fn instance(name: &str, file: &str) -> PathBuf {
-    let p = shared().join("instances").join(name).join(file);
-    assert!(p.is_file(), "missing shared instance file {}", p.display());
-    p
+    dissect_testkit::repo::instance_file(name, file)
 }
 
 /// What one run of the binary did.
@@ -108,7 +101,7 @@ impl Sandbox {
         name.to_string()
     }
 
-    /// Copies a shared instance's figure into the sandbox under `as_name`.
+    /// Copies a benchmark instance's figure into the sandbox under `as_name`.
     pub fn copy_instance(&self, name: &str, file: &str, as_name: &str) -> String {
         std::fs::copy(instance(name, file), self.path(as_name)).expect("copy instance");
         as_name.to_string()
@@ -278,8 +271,10 @@ pub fn piece_count(solution: &serde_json::Value) -> usize {
     counts[0]
 }
 
-/// Checks a written solution with `dissect verify` and with the
-/// independent `shared/tools/verify.py`; returns the piece count.
+/// Checks a written solution with `dissect verify`, with the repository's
+/// independent `tools/check_solution.py` and, when present, with the
+/// external `verify.py` ([`dissect_testkit::repo::assert_checked`]);
+/// returns the piece count.
 #[track_caller]
 pub fn assert_valid(sb: &Sandbox, lattice: &str, solution: &str, figures: &[&str]) -> usize {
     let mut args = vec!["verify", "--lattice", lattice, "--solution", solution];
@@ -292,22 +287,10 @@ pub fn assert_valid(sb: &Sandbox, lattice: &str, solution: &str, figures: &[&str
         format!("valid: {n} piece{}", if n == 1 { "" } else { "s" })
     );
 
-    let out = Command::new("python3")
-        .arg(shared().join("tools/verify.py"))
-        .args(["--lattice", lattice, "--solution", solution])
-        .args(figures)
-        .current_dir(sb.path("."))
-        .output()
-        .expect("python3 runs shared/tools/verify.py");
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "verify.py rejects {solution}:\n{stdout}{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    assert!(
-        stdout.contains(&format!("valid: {n} pieces")),
-        "verify.py says:\n{stdout}"
+    let checked = dissect_testkit::repo::assert_checked(&sb.path("."), lattice, solution, figures);
+    assert_eq!(
+        checked, n,
+        "the checkers count {checked} pieces in {solution}"
     );
     n
 }

@@ -64,7 +64,7 @@ fn expect(kind: LatticeKind) -> Expect {
 }
 
 /// The corners of a 2D cell in the plane (y down), written from
-/// `shared/FORMAT.md` alone, independently of the lattice code: a square
+/// `docs/FORMAT.md` alone, independently of the lattice code: a square
 /// `(x, y)`; a `tri4` triangle (two square corners and the centre); a `tri3`
 /// triangle (`h = √3/2`, apex `((x+1)/2, y·h)` when up, lower vertex
 /// `((x+1)/2, (y+1)·h)` when down); a `hex` hexagon around its centre

@@ -1,6 +1,7 @@
 //! Small end-to-end solves on every lattice, with two and three figures.
 //! Every dissection is checked by `verify::verify`, and one of them by the
-//! independent `shared/tools/verify.py` as well.
+//! independent checkers as well (`tools/check_solution.py`, and the external
+//! `verify.py` when present).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -293,22 +294,10 @@ fn bad_input_is_an_error() {
     );
 }
 
-/// Where `shared/` is (beside the repository), if present.
-fn shared_dir() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared");
-    dir.join("tools/verify.py").is_file().then_some(dir)
-}
-
+/// Solutions of every kind pass the independent checkers:
+/// `tools/check_solution.py` always, the external `verify.py` when present.
 #[test]
-fn solutions_pass_the_python_verifier() {
-    let Some(shared) = shared_dir() else {
-        eprintln!("note: shared/tools/verify.py not found; skipping the python check");
-        return;
-    };
-    if Command::new("python3").arg("--version").output().is_err() {
-        eprintln!("note: python3 not found; skipping the python check");
-        return;
-    }
+fn solutions_pass_the_independent_checkers() {
     let work = Path::new(env!("CARGO_TARGET_TMPDIR")).join("core-solve-python");
     std::fs::create_dir_all(&work).unwrap();
     let cases: [(LatticeKind, bool, &[&str]); 4] = [
@@ -331,25 +320,7 @@ fn solutions_pass_the_python_verifier() {
         let d = dissection_of(lattice, mirror && lattice != Cubic, &found, names);
         let sol = work.join(format!("case{n}-solution.json"));
         std::fs::write(&sol, d.to_file(serde_json::Map::new()).to_json()).unwrap();
-        let out = Command::new("python3")
-            .arg(shared.join("tools/verify.py"))
-            .args(["--lattice", lattice.name(), "--solution"])
-            .arg(&sol)
-            .args(&paths)
-            .output()
-            .expect("run verify.py");
-        let stdout = String::from_utf8_lossy(&out.stdout);
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert!(!stderr.contains("warning"), "case {n}: {stderr}");
-        assert!(
-            out.status.success(),
-            "verify.py rejected case {n}: {stdout}{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let want = format!("valid: {} pieces", found.piece_count());
-        assert!(
-            stdout.lines().any(|l| l.trim() == want),
-            "case {n}: {stdout:?} lacks {want:?}"
-        );
+        let pieces = dissect_testkit::repo::assert_checked(&work, lattice.name(), &sol, &paths);
+        assert_eq!(pieces, found.piece_count(), "case {n}");
     }
 }
