@@ -166,6 +166,11 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
             bytes >> 20,
             options.max_encoding_bytes >> 20
         );
+    } else if let Some(dissect_exact::Limit::Cells { cells }) = &outcome.limit {
+        println!(
+            "no SAT search: a figure has {cells} cells (over {}); the bound below is the cheap one",
+            dissect_exact::bound::FULL_GRAPH_MAX_CELLS
+        );
     } else if outcome.stopped {
         println!("stopped (time limit or Ctrl-C); the bound below is the best proved");
     }
