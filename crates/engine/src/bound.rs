@@ -60,6 +60,10 @@ pub struct BoundReport {
     /// The encoding that was too large, if that ended the search: its
     /// piece count and estimated bytes, and the cap.
     pub too_large: Option<(usize, u64, u64)>,
+    /// The cells of the largest figure when it is over the exact search's
+    /// size (`dissect_exact::bound::FULL_GRAPH_MAX_CELLS`): no SAT search
+    /// ran, the bound is the cheap one.
+    pub too_many_cells: Option<usize>,
     /// Seconds from the start.
     pub seconds: f64,
 }
@@ -132,6 +136,7 @@ pub fn bound(
         found: None,
         end,
         too_large: None,
+        too_many_cells: None,
         seconds: 0.0,
     };
     if let Some(o) = outcome {
@@ -142,8 +147,10 @@ pub fn bound(
                 proof: proof(&o.lower_bound, names),
             };
         }
-        if let Some(Limit::TooLarge { pieces, bytes }) = o.limit {
-            report.too_large = Some((pieces, bytes, cap));
+        match o.limit {
+            Some(Limit::TooLarge { pieces, bytes }) => report.too_large = Some((pieces, bytes, cap)),
+            Some(Limit::Cells { cells }) => report.too_many_cells = Some(cells),
+            _ => {}
         }
         if let Some(pieces) = o.found {
             let v = Verified::new(

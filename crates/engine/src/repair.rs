@@ -23,6 +23,13 @@ const DISSECT_TOTAL_BUDGET: u64 = 16_000;
 /// Conflicts of each restricted-motion pass of those searches.
 const DISSECT_PASS_BUDGET: u64 = 1_000;
 
+/// SAT conflicts for one regrouping search (the union of a few pieces of
+/// the best dissection cut again).
+const REGROUP_BUDGET: u64 = 6_000;
+
+/// SAT conflicts for all of one run's regrouping searches.
+const REGROUP_TOTAL_BUDGET: u64 = 400_000;
+
 /// The memory one of those encodings may take.
 const DISSECT_MAX_ENCODING_BYTES: u64 = 32 << 20;
 
@@ -36,6 +43,8 @@ pub struct ExactRepair<'a> {
     options: RepairOptions,
     /// Conflicts spent so far by [`Repair::dissect`].
     spent: AtomicU64,
+    /// Conflicts spent so far by [`Repair::regroup`].
+    regrouped: AtomicU64,
 }
 
 impl<'a> ExactRepair<'a> {
@@ -45,6 +54,7 @@ impl<'a> ExactRepair<'a> {
             figures,
             options,
             spent: AtomicU64::new(0),
+            regrouped: AtomicU64::new(0),
         }
     }
 }
@@ -68,32 +78,14 @@ impl Repair for ExactRepair<'_> {
         max_pieces: usize,
         stop: &AtomicBool,
     ) -> Option<Vec<Vec<Vec<Cell>>>> {
-        let lattice = self.figures.first()?.lattice();
-        let figures: Vec<Figure> = figures
-            .iter()
-            .map(|cells| Figure::new(lattice, cells.iter().copied()))
-            .collect::<Result<_, _>>()
-            .ok()?;
+        let figures = self.small_figures(figures)?;
+        let budget = Budget {
+            spent: &self.spent,
+            total: DISSECT_TOTAL_BUDGET,
+            each: DISSECT_BUDGET,
+        };
         let minimum = |max_pieces: usize, constraints: Option<Constraints>| {
-            let left = DISSECT_TOTAL_BUDGET.checked_sub(self.spent.load(Ordering::SeqCst))?;
-            if left == 0 {
-                return None;
-            }
-            let options = ExactOptions {
-                mirror: self.options.mirror,
-                mode: Mode::Minimum,
-                deadline: self.options.deadline,
-                max_pieces: Some(max_pieces),
-                conflict_budget: Some(left.min(DISSECT_BUDGET)),
-                restricted_conflicts: Some(DISSECT_PASS_BUDGET),
-                max_encoding_bytes: DISSECT_MAX_ENCODING_BYTES,
-                constraints,
-                ..ExactOptions::default()
-            };
-            let upper = AtomicUsize::new(usize::MAX);
-            let outcome = search(&figures, &options, stop, &upper, &()).ok()?;
-            self.spent.fetch_add(outcome.conflicts, Ordering::SeqCst);
-            outcome.found
+            self.minimum(&figures, max_pieces, constraints, &budget, stop)
         };
         let first = minimum(max_pieces, None)?;
         let k = first[0].len();
@@ -103,5 +95,74 @@ impl Repair for ExactRepair<'_> {
         }
         let sized = Constraints::none().with_sizes(Some(SLIVER_CELLS), None);
         Some(minimum(k, Some(sized)).unwrap_or(first))
+    }
+
+    /// The exact search ([`Mode::Minimum`], at most `max_pieces` pieces,
+    /// 6,000 conflicts); all of one run's regrouping searches share 400,000.
+    fn regroup(
+        &self,
+        figures: &[Vec<Cell>],
+        max_pieces: usize,
+        stop: &AtomicBool,
+    ) -> Option<Vec<Vec<Vec<Cell>>>> {
+        let figures = self.small_figures(figures)?;
+        let budget = Budget {
+            spent: &self.regrouped,
+            total: REGROUP_TOTAL_BUDGET,
+            each: REGROUP_BUDGET,
+        };
+        self.minimum(&figures, max_pieces, None, &budget, stop)
+    }
+}
+
+/// A share of SAT conflicts: `each` per search, `total` for all of them.
+struct Budget<'a> {
+    spent: &'a AtomicU64,
+    total: u64,
+    each: u64,
+}
+
+impl ExactRepair<'_> {
+    /// Cells as figures of the run's lattice.
+    fn small_figures(&self, figures: &[Vec<Cell>]) -> Option<Vec<Figure>> {
+        let lattice = self.figures.first()?.lattice();
+        figures
+            .iter()
+            .map(|cells| Figure::new(lattice, cells.iter().copied()))
+            .collect::<Result<_, _>>()
+            .ok()
+    }
+
+    /// A minimum dissection of `figures` with at most `max_pieces` pieces
+    /// under `constraints`, within what is left of `budget`.
+    fn minimum(
+        &self,
+        figures: &[Figure],
+        max_pieces: usize,
+        constraints: Option<Constraints>,
+        budget: &Budget<'_>,
+        stop: &AtomicBool,
+    ) -> Option<Vec<Vec<Vec<Cell>>>> {
+        let left = budget
+            .total
+            .checked_sub(budget.spent.load(Ordering::SeqCst))?;
+        if left == 0 {
+            return None;
+        }
+        let options = ExactOptions {
+            mirror: self.options.mirror,
+            mode: Mode::Minimum,
+            deadline: self.options.deadline,
+            max_pieces: Some(max_pieces),
+            conflict_budget: Some(left.min(budget.each)),
+            restricted_conflicts: Some(DISSECT_PASS_BUDGET),
+            max_encoding_bytes: DISSECT_MAX_ENCODING_BYTES,
+            constraints,
+            ..ExactOptions::default()
+        };
+        let upper = AtomicUsize::new(usize::MAX);
+        let outcome = search(figures, &options, stop, &upper, &()).ok()?;
+        budget.spent.fetch_add(outcome.conflicts, Ordering::SeqCst);
+        outcome.found
     }
 }

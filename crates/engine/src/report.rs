@@ -21,10 +21,13 @@ pub enum Source {
     Coarse,
     /// One large common piece, the rest dissected exactly sector by sector.
     Sectors,
+    /// Touching pieces of the best dissection cut again exactly, fewer.
+    Regroup,
 }
 
 impl Source {
-    /// `greedy`, `search`, `repair`, `sat`, `coarse` or `sectors`.
+    /// `greedy`, `search`, `repair`, `sat`, `coarse`, `sectors` or
+    /// `regroup`.
     pub fn name(self) -> &'static str {
         match self {
             Source::Greedy => "greedy",
@@ -33,6 +36,7 @@ impl Source {
             Source::Sat => "sat",
             Source::Coarse => "coarse",
             Source::Sectors => "sectors",
+            Source::Regroup => "regroup",
         }
     }
 }

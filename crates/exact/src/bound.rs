@@ -5,6 +5,7 @@ use std::fmt;
 use dissect_core::{Cell, Figure};
 
 use crate::component_count::{all_congruent, most_components};
+use crate::extent_clique::extent_clique;
 use crate::incompatible_clique::Incompatibility;
 use crate::instance::Instance;
 use crate::ExactError;
@@ -111,6 +112,11 @@ pub(crate) struct Cheap {
     pub graphs: Option<Vec<Incompatibility>>,
 }
 
+/// Figures of more cells get the incompatible-cell bound of
+/// [`extent_clique`] (extreme cells, difference sets) instead of the full
+/// incompatibility graph, whose cost grows with the square of the cells.
+pub const FULL_GRAPH_MAX_CELLS: usize = 600;
+
 /// Branch-and-bound nodes spent on one figure's clique.
 const CLIQUE_NODES: usize = 200_000;
 
@@ -158,8 +164,18 @@ pub(crate) fn cheap_with(
     early(&bound);
     let mut clique_figure = 0;
     let mut clique = Vec::new();
-    let mut graphs = Some(Vec::with_capacity(inst.shapes.len()));
+    let large = inst.shapes.iter().any(|s| s.len() > FULL_GRAPH_MAX_CELLS);
+    let mut graphs = (!large).then(|| Vec::with_capacity(inst.shapes.len()));
     for k in 0..inst.shapes.len() {
+        if large {
+            // The full graphs would cost too much: extreme cells only.
+            let c = extent_clique(&inst, k, CLIQUE_NODES, interrupted).unwrap_or_default();
+            if c.len() > clique.len() {
+                clique = c;
+                clique_figure = inst.order[k];
+            }
+            continue;
+        }
         let Some(g) = Incompatibility::of_shape(&inst, k, interrupted) else {
             graphs = None;
             break;

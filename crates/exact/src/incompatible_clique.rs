@@ -128,6 +128,22 @@ impl Incompatibility {
         Some(Incompatibility { n, rows })
     }
 
+    /// The graph on `n` cells where `apart(a, b)` (asked for `a < b`)
+    /// says whether `a` and `b` can never share a piece.
+    pub fn from_pairs(n: usize, apart: impl Fn(usize, usize) -> bool) -> Incompatibility {
+        let words = n.div_ceil(64);
+        let mut rows = vec![vec![0u64; words]; n];
+        for a in 0..n {
+            for b in a + 1..n {
+                if apart(a, b) {
+                    rows[a][b / 64] |= 1 << (b % 64);
+                    rows[b][a / 64] |= 1 << (a % 64);
+                }
+            }
+        }
+        Incompatibility { n, rows }
+    }
+
     /// The number of ordered pairs of incompatible cells.
     pub fn edges(&self) -> u64 {
         self.rows

@@ -75,6 +75,12 @@ pub const DEFAULT_MAX_ENCODING_BYTES: u64 = 512 << 20;
 pub enum Limit {
     /// [`ExactOptions::conflict_budget`] was spent.
     ConflictBudget,
+    /// A figure has more than [`FULL_GRAPH_MAX_CELLS`](crate::bound::FULL_GRAPH_MAX_CELLS)
+    /// cells: no SAT model is built, only the cheap bounds hold.
+    Cells {
+        /// The cells of the largest figure.
+        cells: usize,
+    },
     /// The encoding for `pieces` pieces was estimated at `bytes`, over
     /// [`ExactOptions::max_encoding_bytes`].
     TooLarge {
@@ -381,7 +387,12 @@ pub fn search(
     };
     let Some((mut inst, clique, incompat)) = model_inputs(figures, options.mirror, &mut cheap)
     else {
-        outcome.stopped = true;
+        let cells = figures.iter().map(Figure::len).max().unwrap_or(0);
+        if cells > crate::bound::FULL_GRAPH_MAX_CELLS && !interrupted() {
+            outcome.limit = Some(Limit::Cells { cells });
+        } else {
+            outcome.stopped = true;
+        }
         return Ok(outcome);
     };
     if let Some(c) = &options.constraints {

@@ -455,3 +455,36 @@ fn split_models_are_repaired_both_ways() {
         assert!(exact.optimal());
     }
 }
+
+/// The corner bound holds at every size: sums of cubes over the full
+/// graph's 600 cells (729 and 8,000 voxels) get the 8 corners of the large
+/// cube, with the cells they name pairwise too far apart for any piece that
+/// fits in a smaller cube, and a figure's 3 components still count.
+#[test]
+fn the_corner_bound_holds_for_large_sums_of_cubes() {
+    // Each instance with the side of its largest small cube.
+    for (name, small) in [("cubes-1-6-8-to-9", 8), ("cubes-7-14-17-to-20", 17)] {
+        let figs: Vec<Figure> = ["a.txt", "b.txt"]
+            .iter()
+            .map(|f| {
+                let text = std::fs::read_to_string(dissect_testkit::repo::instance_file(name, f))
+                    .expect("instance");
+                parse_figure(&text, LatticeKind::Cubic).expect("figure")
+            })
+            .collect();
+        let bound = cheap_bound(&figs, true).expect("valid figures");
+        assert_eq!(bound.value, 8, "{name}: {bound}");
+        let Reason::Incompatible { figure: 1, cells } = &bound.reason else {
+            panic!("{name}: {bound}");
+        };
+        // Two cells of one small cube differ by less than its side on
+        // every axis.
+        let largest = small - 1;
+        for (i, a) in cells.iter().enumerate() {
+            for b in &cells[i + 1..] {
+                let spread = (0..3).map(|d| (a[d] - b[d]).abs()).max().unwrap();
+                assert!(spread > largest, "{name}: {a:?} and {b:?} fit one piece");
+            }
+        }
+    }
+}

@@ -12,7 +12,7 @@ use crate::solver::explore::Executor;
 use crate::solver::incumbent::Incumbent;
 use crate::solver::plateau::{plateau_descents, plateau_walk};
 use crate::solver::search::{From, Level, Search};
-use crate::solver::{coarse, greedy, sectors};
+use crate::solver::{coarse, greedy, regroup, sectors};
 use crate::solver::{Event, Observer, Options, Outcome, Repair, SolveError, Via};
 
 /// Levels climbed at full resolution from a lifted coarse candidate.
@@ -94,6 +94,9 @@ pub fn solve_anytime_with(
     if !search.stopped() {
         run.sectors();
     }
+    if !search.stopped() {
+        run.regroup();
+    }
     // Large figures: the level search costs about the same per level at
     // any resolution, so it runs on the figures at half resolution (halved
     // again while they are large); the coarse dissection is lifted, refined
@@ -104,6 +107,7 @@ pub fn solve_anytime_with(
     if large && !search.stopped() {
         run.coarse()?;
     }
+
     let mut idle = 0;
     // On large figures the coarse step was round 0.
     let first_round = usize::from(large);
@@ -115,7 +119,12 @@ pub fn solve_anytime_with(
             break;
         }
         let fresh = search.fresh();
-        let improved = run.round(round, large)?;
+        let mut improved = run.round(round, large)?;
+        if improved && large && !search.stopped() {
+            let before = run.inc.pieces();
+            run.regroup();
+            improved |= run.inc.pieces() < before;
+        }
         // With the plateau, new solutions the judge wanted are progress.
         if improved || (anytime.plateau && search.fresh() > fresh) {
             idle = 0;
@@ -203,8 +212,20 @@ impl<'r, 'a> Run<'r, 'a> {
                 if search.stopped() {
                     break 'styles;
                 }
-                let mut cand =
-                    greedy::greedy(&search.problem, greedy::GreedyStyle { pivot, divisor });
+                let style = greedy::GreedyStyle { pivot, divisor };
+                // The first dissection is always finished; later ones stop
+                // with the run.
+                let never = AtomicBool::new(false);
+                let stop = if self.inc.pieces().is_some() {
+                    search.stop
+                } else {
+                    &never
+                };
+                let Some(mut cand) =
+                    search.install(|| greedy::greedy_until(&search.problem, style, stop))
+                else {
+                    break 'styles;
+                };
                 let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
                 debug_assert!(score.valid, "the greedy dissection is valid");
                 search.judge(&cand, &mut score);
@@ -230,7 +251,8 @@ impl<'r, 'a> Run<'r, 'a> {
             if search.stopped() {
                 break;
             }
-            for plan in sectors::plans(&search.problem, pivot) {
+            let plans = search.install(|| sectors::plans(&search.problem, pivot));
+            for plan in plans {
                 // Another frame often gives the same sectors.
                 if search.stopped() || tried.contains(&plan) {
                     continue;
@@ -254,6 +276,40 @@ impl<'r, 'a> Run<'r, 'a> {
             }
         }
     }
+    /// Regrouping ([`regroup`]): groups of touching pieces of the best
+    /// dissection, the smallest first, cut again exactly with fewer pieces,
+    /// for as long as that works.
+    fn regroup(&mut self) {
+        let Some(repairer) = self.repair else {
+            return;
+        };
+        let search = self.search;
+        let mut tried = Vec::new();
+        while let Some((best, _)) = self.inc.best.as_ref() {
+            if search.stopped() {
+                break;
+            }
+            let Some(pieces) = regroup::regroup_once(
+                search.figures,
+                &search.problem,
+                &best.labels,
+                best.k,
+                repairer,
+                search.stop,
+                &mut tried,
+            ) else {
+                break;
+            };
+            let Some((c, s)) = search.candidate_of(&pieces) else {
+                break;
+            };
+            let level = c.k - 1;
+            if !self.inc.improve(search, c, s, level, 0, Via::Regroup) {
+                break;
+            }
+        }
+    }
+
     /// The coarse step (round 0 of large figures): the anytime search on
     /// the figures at lower resolution, lifted ([`Run::lift`]), then, when
     /// the lift is close to a dissection, the climb ([`Run::climb`]).

@@ -10,7 +10,9 @@
 //! second on figures of a few thousand cells; the level search then looks
 //! for fewer pieces.
 
-use crate::lattice::Point;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use crate::lattice::{Point, Symmetry};
 use crate::solver::candidate::{Candidate, Problem};
 use crate::solver::shape::Shape;
 
@@ -26,7 +28,18 @@ pub(crate) struct GreedyStyle {
 
 /// A valid dissection of the problem's shapes (labels `0..k`, every piece
 /// connected and congruent in every figure).
+#[cfg(test)]
 pub(crate) fn greedy(problem: &Problem, style: GreedyStyle) -> Candidate {
+    greedy_until(problem, style, &AtomicBool::new(false)).expect("never stopped")
+}
+
+/// [`greedy`], or `None` when `stop` is raised before it ends (asked once
+/// per step).
+pub(crate) fn greedy_until(
+    problem: &Problem,
+    style: GreedyStyle,
+    stop: &AtomicBool,
+) -> Option<Candidate> {
     let shapes = &problem.shapes;
     let nf = shapes.len();
     let pivot = style.pivot.min(nf - 1);
@@ -35,6 +48,9 @@ pub(crate) fn greedy(problem: &Problem, style: GreedyStyle) -> Candidate {
     let mut left = n;
     let mut k: u16 = 0;
     while left > 0 {
+        if stop.load(Ordering::Relaxed) {
+            return None;
+        }
         let (common, motions) = common_part(problem, pivot, &labels);
         debug_assert!(!common.is_empty(), "a single cell always fits");
         let comps = components(&shapes[pivot], &common);
@@ -55,10 +71,10 @@ pub(crate) fn greedy(problem: &Problem, style: GreedyStyle) -> Candidate {
             k += 1;
         }
     }
-    Candidate {
+    Some(Candidate {
         labels,
         k: k as usize,
-    }
+    })
 }
 
 /// The pivot's free cells whose images are free in every other figure
@@ -98,6 +114,14 @@ const VOTE_PAIRS: usize = 1 << 22;
 /// The motion `(symmetry index, translation)` carrying the most of `cells`
 /// (of shape `from`) onto free cells of shape `to`. Ties go to the first
 /// symmetry, then the smallest translation in index order.
+///
+/// Symmetries that are equivalent for this question are counted once: when
+/// `h` maps the free cells of `to` onto themselves (up to a lattice
+/// translation) and `r` does so for `cells`, then `h ∘ s ∘ r` carries as
+/// many cells as `s` does, so only the first symmetry of each such class
+/// votes (on a cube into a box, one of 48 at the first step). The classes'
+/// votes run in parallel on the current rayon pool and are combined in
+/// symmetry order, so the answer does not depend on the threads.
 fn best_motion(
     problem: &Problem,
     from: usize,
@@ -105,71 +129,190 @@ fn best_motion(
     to: usize,
     to_labels: &[u16],
 ) -> (usize, Point) {
+    use rayon::prelude::*;
     let src = &problem.shapes[from];
     let dst = &problem.shapes[to];
     let free: Vec<Point> = (0..dst.len() as u32)
-        .filter(|&c| to_labels[c as usize] == u16::MAX)
+        .filter(|&c| to_labels[c as usize] == FREE)
         .map(|c| dst.point(c))
         .collect();
-    let m = problem.geo.modulus;
-    let dim = problem.geo.dim;
-    let (qlo, qhi) = bounds(&free);
-    let mut best = (0u32, 0usize, [0i32; 3]);
-    let mut votes: Vec<u32> = Vec::new();
+    let source: Vec<Point> = cells.iter().map(|&c| src.point(c)).collect();
+    let syms = &problem.geo.syms;
+    let in_free = |p: Point| dst.lookup(p).is_some_and(|j| to_labels[j as usize] == FREE);
+    let mut in_cells = vec![false; src.len()];
+    for &c in cells {
+        in_cells[c as usize] = true;
+    }
+    let in_source = |p: Point| src.lookup(p).is_some_and(|j| in_cells[j as usize]);
+    let left = stabilizer(problem, &free, &in_free);
+    let right = stabilizer(problem, &source, &in_source);
+    let reps = representatives(syms, &left, &right);
     // Votes are counted over at most VOTE_PAIRS pairs per symmetry: on large
     // figures every `stride`-th cell votes (the count of a translation then
     // estimates its overlap), which keeps a step linear in the cells.
     let stride = (cells.len() * free.len()).div_ceil(VOTE_PAIRS).max(1);
-    for (s, sym) in problem.geo.syms.iter().enumerate() {
-        let moved: Vec<Point> = cells
-            .iter()
-            .step_by(stride)
-            .map(|&c| sym.apply(src.point(c)))
-            .collect();
-        let (plo, phi) = bounds(&moved);
-        // Translations t = q - p over every pair; only lattice translations
-        // (multiples of the modulus in the moved coordinates, 0 elsewhere)
-        // count.
-        let mut lo = [0i32; 3];
-        let mut size = [1usize; 3];
-        for d in 0..dim {
-            lo[d] = (qlo[d] - phi[d]).div_euclid(m);
-            let hi = (qhi[d] - plo[d]).div_euclid(m);
-            size[d] = (hi - lo[d] + 1) as usize;
+    let best: Vec<(u32, usize, [i32; 3])> = reps
+        .par_iter()
+        .map(|&s| votes_of(problem, &source, &free, stride, s))
+        .collect();
+    let mut top = (0u32, 0usize, [0i32; 3]);
+    for b in best {
+        if b.0 > top.0 {
+            top = b;
         }
-        votes.clear();
-        votes.resize(size[0] * size[1] * size[2], 0);
-        for p in &moved {
-            for q in &free {
-                let mut idx = 0usize;
-                let mut ok = true;
-                for d in (0..3).rev() {
-                    let diff = q[d] - p[d];
-                    if d >= dim {
-                        ok &= diff == 0;
-                        continue;
-                    }
-                    ok &= diff.rem_euclid(m) == 0;
-                    idx = idx * size[d] + (diff.div_euclid(m) - lo[d]) as usize;
-                }
-                if ok {
-                    votes[idx] += 1;
-                }
+    }
+    (top.1, Point::from(top.2))
+}
+
+/// The translation carrying the most of `source` (every `stride`-th point)
+/// under symmetry `s` onto `free`: `(votes, s, translation)`, the smallest
+/// translation in index order on ties.
+fn votes_of(
+    problem: &Problem,
+    source: &[Point],
+    free: &[Point],
+    stride: usize,
+    s: usize,
+) -> (u32, usize, [i32; 3]) {
+    let m = problem.geo.modulus;
+    let dim = problem.geo.dim;
+    let sym = problem.geo.syms[s];
+    let (qlo, qhi) = bounds(free);
+    let moved: Vec<Point> = source
+        .iter()
+        .step_by(stride)
+        .map(|&p| sym.apply(p))
+        .collect();
+    let (plo, phi) = bounds(&moved);
+    // Translations t = q - p over every pair; only lattice translations
+    // (multiples of the modulus in the moved coordinates, 0 elsewhere)
+    // count.
+    let mut lo = [0i32; 3];
+    let mut size = [1usize; 3];
+    for d in 0..dim {
+        lo[d] = (qlo[d] - phi[d]).div_euclid(m);
+        let hi = (qhi[d] - plo[d]).div_euclid(m);
+        size[d] = (hi - lo[d] + 1) as usize;
+    }
+    // With q = p + t, t a lattice translation: same residue, and the vote's
+    // index is U(q) - U(p) - L for the quotients' linear index U.
+    let (mut residues, mut classes): (Vec<Point>, Vec<Vec<i64>>) = (Vec::new(), Vec::new());
+    let split = |x: Point| -> (Point, i64) {
+        let mut r = [0i32; 3];
+        let (mut u, mut step) = (0i64, 1i64);
+        for d in 0..3 {
+            if d < dim {
+                r[d] = x[d].rem_euclid(m);
+                u += i64::from(x[d].div_euclid(m)) * step;
+                step *= size[d] as i64;
+            } else {
+                r[d] = x[d];
             }
         }
-        for (idx, &v) in votes.iter().enumerate() {
-            if v > best.0 {
-                let mut rest = idx;
-                let mut t = [0i32; 3];
-                for d in 0..dim {
-                    t[d] = ((rest % size[d]) as i32 + lo[d]) * m;
-                    rest /= size[d];
-                }
-                best = (v, s, t);
+        (Point::from(r), u)
+    };
+    for &q in free {
+        let (r, u) = split(q);
+        match residues.iter().position(|x| *x == r) {
+            Some(i) => classes[i].push(u),
+            None => {
+                residues.push(r);
+                classes.push(vec![u]);
             }
         }
     }
-    (best.1, Point::from(best.2))
+    let low: i64 = (0..dim)
+        .rev()
+        .fold(0i64, |acc, d| acc * size[d] as i64 + i64::from(lo[d]));
+    let mut votes = vec![0u32; size[0] * size[1] * size[2]];
+    for &p in &moved {
+        let (r, u) = split(p);
+        let Some(i) = residues.iter().position(|x| *x == r) else {
+            continue;
+        };
+        let base = -u - low;
+        for &uq in &classes[i] {
+            votes[(uq + base) as usize] += 1;
+        }
+    }
+    let mut best = (0u32, s, [0i32; 3]);
+    for (idx, &v) in votes.iter().enumerate() {
+        if v > best.0 {
+            let mut rest = idx;
+            let mut t = [0i32; 3];
+            for d in 0..dim {
+                t[d] = ((rest % size[d]) as i32 + lo[d]) * m;
+                rest /= size[d];
+            }
+            best = (v, s, t);
+        }
+    }
+    best
+}
+
+/// The symmetries `h` (indices) with `h(points) = points + c` for a lattice
+/// translation `c`, the identity included; `inside` says whether a point is
+/// in the set. Tried point by point, so a symmetry that fails usually fails
+/// at once.
+fn stabilizer(problem: &Problem, points: &[Point], inside: &dyn Fn(Point) -> bool) -> Vec<usize> {
+    let (lo, hi) = bounds(points);
+    let (dim, m) = (problem.geo.dim, problem.geo.modulus);
+    problem
+        .geo
+        .syms
+        .iter()
+        .enumerate()
+        .filter(|(_, h)| {
+            if points.is_empty() {
+                return true;
+            }
+            // The moved box's low corner must be the box's low corner + c.
+            let mut mlo = [i32::MAX; 3];
+            for corner in 0..8u32 {
+                let c = Point::from([
+                    if corner & 1 == 0 { lo[0] } else { hi[0] },
+                    if corner & 2 == 0 { lo[1] } else { hi[1] },
+                    if corner & 4 == 0 { lo[2] } else { hi[2] },
+                ]);
+                let q = h.apply(c);
+                for d in 0..3 {
+                    mlo[d] = mlo[d].min(q[d]);
+                }
+            }
+            let c = Point::from(mlo) - lo;
+            let lattice = (0..3).all(|d| {
+                if d < dim {
+                    c[d].rem_euclid(m) == 0
+                } else {
+                    c[d] == 0
+                }
+            });
+            lattice && points.iter().all(|&p| inside(h.apply(p) - c))
+        })
+        .map(|(i, _)| i)
+        .collect()
+}
+
+/// The first symmetry of each class `{h ∘ s ∘ r : h in left, r in right}`,
+/// in index order.
+fn representatives(syms: &[Symmetry], left: &[usize], right: &[usize]) -> Vec<usize> {
+    let mut covered = vec![false; syms.len()];
+    let mut reps = Vec::new();
+    for s in 0..syms.len() {
+        if covered[s] {
+            continue;
+        }
+        reps.push(s);
+        for &h in left {
+            for &r in right {
+                let g = syms[h].compose(&syms[s]).compose(&syms[r]);
+                if let Some(i) = syms.iter().position(|x| *x == g) {
+                    covered[i] = true;
+                }
+            }
+        }
+    }
+    reps
 }
 
 fn bounds(points: &[Point]) -> (Point, Point) {

@@ -28,6 +28,7 @@ mod paper;
 pub(crate) mod piece;
 mod plateau;
 pub(crate) mod refine;
+pub(crate) mod regroup;
 mod search;
 pub(crate) mod sectors;
 pub(crate) mod shape;
@@ -133,10 +134,14 @@ pub enum Via {
     Coarse,
     /// One large common piece, the rest dissected exactly sector by sector.
     Sectors,
+    /// A few touching pieces of the best dissection cut again, exactly,
+    /// with fewer pieces.
+    Regroup,
 }
 
 impl Via {
-    /// A short name: `greedy`, `search`, `repair`, `coarse`, `sectors`.
+    /// A short name: `greedy`, `search`, `repair`, `coarse`, `sectors`,
+    /// `regroup`.
     pub fn name(self) -> &'static str {
         match self {
             Via::Greedy => "greedy",
@@ -144,6 +149,7 @@ impl Via {
             Via::Repair => "repair",
             Via::Coarse => "coarse",
             Via::Sectors => "sectors",
+            Via::Regroup => "regroup",
         }
     }
 }
@@ -356,5 +362,19 @@ pub trait Repair: Sync {
     ) -> Option<Vec<Vec<Vec<Cell>>>> {
         let _ = (figures, max_pieces, stop);
         None
+    }
+
+    /// [`Repair::dissect`] for the groups of pieces of a dissection that
+    /// the anytime search's regrouping hands over: their
+    /// unions, to be cut with at most `max_pieces` pieces. The default is
+    /// [`Repair::dissect`]; an implementation may give it a budget of its
+    /// own.
+    fn regroup(
+        &self,
+        figures: &[Vec<Cell>],
+        max_pieces: usize,
+        stop: &AtomicBool,
+    ) -> Option<Vec<Vec<Vec<Cell>>>> {
+        self.dissect(figures, max_pieces, stop)
     }
 }

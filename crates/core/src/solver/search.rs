@@ -138,6 +138,13 @@ impl<'a> Search<'a> {
         self.fresh.load(Ordering::Relaxed)
     }
 
+    /// Runs `f` on the solver's pool, so that its parallel steps use the
+    /// run's threads.
+    pub(crate) fn install<R: Send>(&self, f: impl FnOnce() -> R + Send) -> R {
+        self.pool.install(f)
+    }
+
+    /// Whether the run was asked to stop.
     pub(crate) fn stopped(&self) -> bool {
         self.stop.load(Ordering::Relaxed)
     }

@@ -10,6 +10,7 @@ mod levels;
 mod matching;
 mod multi_figure;
 mod refine;
+mod regroup;
 mod sectors;
 mod shape;
 mod util;

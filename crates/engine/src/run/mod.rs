@@ -23,10 +23,11 @@ use crate::report::{Improvement, LowerBound, Report};
 pub(crate) use shared::{proof, Forward};
 use shared::{Judge, Shared};
 
-/// The exact search runs beside the heuristic only on figures of at most
-/// this many cells: its encoding grows with cells × placements, and larger
-/// figures would spend memory and a core on a formula it cannot solve.
-pub const PROVE_MAX_CELLS: usize = 600;
+/// The SAT search (beside the heuristic, and in the polish) works only on
+/// figures of at most this many cells: its encoding grows with cells ×
+/// placements. Larger figures get the exact side's cheap bounds only
+/// (components, incompatible corners), which hold at every size.
+pub const PROVE_MAX_CELLS: usize = dissect_exact::bound::FULL_GRAPH_MAX_CELLS;
 
 /// SAT conflicts the exact side may spend in a run without a time limit.
 pub const EXACT_BUDGET: u64 = 100_000;
@@ -239,8 +240,9 @@ impl<'r> Plan<'r> {
             start,
             deadline,
             heuristic_on: strategy != Strategy::Exact,
-            exact_on: strategy == Strategy::Exact
-                || (config.prove && figures[0].len() <= PROVE_MAX_CELLS),
+            // On figures over the exact crate's size the exact side gives
+            // the cheap bounds (corners, components) and no SAT search.
+            exact_on: strategy == Strategy::Exact || config.prove,
             polishable,
             polish_from,
         }

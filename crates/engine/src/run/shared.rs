@@ -228,6 +228,7 @@ impl Observer for Shared<'_> {
                     Via::Repair => Source::Repair,
                     Via::Coarse => Source::Coarse,
                     Via::Sectors => Source::Sectors,
+                    Via::Regroup => Source::Regroup,
                     _ => Source::Search,
                 },
             ),
