@@ -31,6 +31,8 @@ mod info;
 mod limits;
 #[path = "cli/output.rs"]
 mod output;
+#[path = "cli/prompt.rs"]
+mod prompt;
 #[path = "cli/reproducibility.rs"]
 mod reproducibility;
 #[path = "cli/solutions.rs"]

@@ -235,6 +235,46 @@ impl Context<'_> {
     /// One SAT model for `k` pieces with `set` motions, with connectivity
     /// cuts until a model is connected, the model is UNSAT, time is up or
     /// `conflicts` are spent.
+    /// The restricted passes of `k` pieces (translations, then rotations:
+    /// quick to find a dissection, proving nothing when they find none);
+    /// the first dissection found.
+    fn restricted_passes(
+        &self,
+        k: usize,
+        restricted: &[MotionSet],
+        options: &ExactOptions,
+        left: &dyn Fn() -> Option<u64>,
+        interrupted: &dyn Fn() -> bool,
+    ) -> Option<Vec<Vec<Vec<usize>>>> {
+        for &set in restricted {
+            let (deadline, conflicts) = match options.restricted_conflicts {
+                Some(c) => (options.deadline, Some(left().map_or(c, |l| l.min(c)))),
+                None => {
+                    let budget = Instant::now().checked_add(options.restricted_time);
+                    let d = match (options.deadline, budget) {
+                        (Some(d), Some(b)) => Some(d.min(b)),
+                        (d, b) => d.or(b),
+                    };
+                    (d, left())
+                }
+            };
+            let timed_out = match self.pass(k, set, deadline, conflicts) {
+                Pass::Found(p) => return Some(p),
+                Pass::Unsat { .. } => false,
+                Pass::Unknown | Pass::TooLarge(_) => true,
+            };
+            self.observer.on_event(&ExactEvent::Inconclusive {
+                pieces: k,
+                motions: set,
+                timed_out,
+            });
+            if interrupted() || self.upper.load(Ordering::SeqCst) <= k {
+                break;
+            }
+        }
+        None
+    }
+
     fn pass(
         &self,
         k: usize,
@@ -437,39 +477,7 @@ pub fn search(
             outcome.limit = Some(Limit::ConflictBudget);
             break;
         }
-        let mut found = None;
-        for &set in &restricted {
-            let (deadline, conflicts) = match options.restricted_conflicts {
-                Some(c) => (options.deadline, Some(left().map_or(c, |l| l.min(c)))),
-                None => {
-                    let budget = Instant::now().checked_add(options.restricted_time);
-                    let d = match (options.deadline, budget) {
-                        (Some(d), Some(b)) => Some(d.min(b)),
-                        (d, b) => d.or(b),
-                    };
-                    (d, left())
-                }
-            };
-            match ctx.pass(k, set, deadline, conflicts) {
-                Pass::Found(p) => {
-                    found = Some(p);
-                    break;
-                }
-                Pass::Unsat { .. } => observer.on_event(&ExactEvent::Inconclusive {
-                    pieces: k,
-                    motions: set,
-                    timed_out: false,
-                }),
-                Pass::Unknown | Pass::TooLarge(_) => observer.on_event(&ExactEvent::Inconclusive {
-                    pieces: k,
-                    motions: set,
-                    timed_out: true,
-                }),
-            }
-            if interrupted() || upper.load(Ordering::SeqCst) <= k {
-                break;
-            }
-        }
+        let found = ctx.restricted_passes(k, &restricted, options, &left, &interrupted);
         let found = match found {
             Some(p) => Some(p),
             None => match ctx.pass(k, MotionSet::All, options.deadline, left()) {

@@ -7,7 +7,7 @@
 //! pieces are found once.
 //!
 //! The search visits every solution, checks a stop flag and a deadline
-//! after every [`CHECK_WORK`] link updates (a measure of work, not of
+//! after every 65,536 link updates (a measure of work, not of
 //! nodes: one node of a large board can update millions of links), and
 //! reports progress (an estimate of the fraction of
 //! the search tree done) through a callback.

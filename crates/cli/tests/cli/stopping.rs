@@ -30,8 +30,9 @@ fn time_limit_ends_a_big_search_within_seconds() {
         &a,
         &b,
     ]);
+    // Within one second of the limit, process start included.
     assert!(
-        run.elapsed < Duration::from_secs(4),
+        run.elapsed < Duration::from_secs(2),
         "--time-limit 1 took {:?}",
         run.elapsed
     );
@@ -64,7 +65,7 @@ fn time_limit_keeps_a_dissection_found_before_it() {
         &b,
     ]);
     assert!(
-        run.elapsed < Duration::from_secs(4),
+        run.elapsed < Duration::from_millis(1500),
         "took {:?}",
         run.elapsed
     );
@@ -92,7 +93,7 @@ fn ctrl_c_before_a_dissection_exits_1_with_the_best_score() {
     assert!(running.first.starts_with("level 0 "), "{}", running.first);
     std::thread::sleep(Duration::from_millis(300));
     running.signal("INT");
-    let run = running.wait(Duration::from_secs(3));
+    let run = running.wait(Duration::from_secs(1));
     run.expect_code(1).stderr_has(&[
         "no dissection found: interrupted (Ctrl-C)",
         "matching score E_M = ",
@@ -120,7 +121,7 @@ fn ctrl_c_after_a_dissection_writes_it_and_exits_0() {
     // Level 1 finds a dissection in its first batch, then goes on.
     std::thread::sleep(Duration::from_millis(500));
     running.signal("INT");
-    let run = running.wait(Duration::from_secs(3));
+    let run = running.wait(Duration::from_secs(1));
     run.expect_code(0)
         .stdout_has(&["2 pieces", "interrupted; best found so far"]);
     assert_eq!(assert_valid(&sb, "square", "out.json", &[&a, &b]), 2);
@@ -141,6 +142,6 @@ fn sigterm_stops_like_ctrl_c() {
     ]);
     std::thread::sleep(Duration::from_millis(200));
     running.signal("TERM");
-    let run = running.wait(Duration::from_secs(3));
+    let run = running.wait(Duration::from_secs(1));
     run.expect_code(1).stderr_has(&["no dissection found"]);
 }

@@ -152,10 +152,10 @@ pub fn check(figures: &[Figure], options: &RunOptions) -> Result<(), EngineError
 /// executor that returns what [`dissect_core::solver::Explorer::explore`]
 /// returns gives the same answer as [`run`].
 ///
-/// The phases: the [`Plan`] (what runs, fixed before the start), the
-/// [`Shared`] state, the search of both sides under the monitor
-/// ([`sides::search`]), the polish ([`polish::polish`]) and the answer
-/// (verification, ranking, the report: [`answer::answer`]).
+/// The phases: the `Plan` (what runs, fixed before the start), the
+/// `Shared` state, the search of both sides under the monitor
+/// (`sides::search`), the polish (`polish::polish`) and the answer
+/// (verification, ranking, the report: `answer::answer`).
 pub fn run_with(
     figures: &[Figure],
     names: &[String],
