@@ -58,7 +58,7 @@ def main():
             many.append(tn)
             spread.append(tr)
         m1, mn, mr = (statistics.median(x) for x in (one, many, spread))
-        print(f"| {name} | {dr.piece_count} | {dr._extra['explorations']} | {m1:.2f} s | {mn:.2f} s | {mr:.2f} s | {mr / mn:.1f}× | {dr.ray_batches} |")
+        print(f"| {name} | {dr.piece_count} | {dr._extra['explorations']} | {m1:.2f} s | {mn:.2f} s | {mr:.2f} s | {mr / mn:.1f}× | {len(dr.ray_batches or [])} |")
         sys.stdout.flush()
     ray.shutdown()
 

@@ -1,7 +1,8 @@
 """dissect: geometric dissection puzzles from Python.
 
 Find few connected pieces that cut one lattice figure into others (squares,
-``tri4`` right triangles, cubes), prove lower bounds, check solutions::
+``tri4`` right triangles, cubes, ``tri3`` triangles, hexagons), prove lower
+bounds, check solutions, count assemblies and draw them::
 
     import numpy as np
     import dissect
@@ -18,9 +19,21 @@ search's explorations, on a Ray cluster.
 
 from __future__ import annotations
 
+import builtins
 import json
 import os
-from typing import Any, Dict, List, Optional, Sequence, Union
+from typing import (
+    Any,
+    Callable,
+    Dict,
+    List,
+    Mapping,
+    NamedTuple,
+    Optional,
+    Sequence,
+    Tuple,
+    Union,
+)
 
 from . import _dissect
 from ._dissect import LATTICES, Figure
@@ -36,13 +49,19 @@ from ._errors import (
 __all__ = [
     "Figure",
     "Dissection",
+    "Assemblies",
     "LowerBound",
     "solve",
     "bound",
+    "enumerate",
+    "Enumeration",
     "verify",
     "read_figure",
+    "piece_colour",
     "LATTICES",
     "OPTIONS",
+    "PALETTE",
+    "RANKS",
     "DissectError",
     "FigureError",
     "ProblemError",
@@ -51,17 +70,62 @@ __all__ = [
     "NoDissectionFound",
 ]
 
-#: The solver options ``solve`` takes as keywords (the CLI's flags, with
-#: ``_`` for ``-``): mirror, max_pieces, area_weight, explorations, keep,
-#: iterations, split_penalty, split_tries, full_level, extra_rounds, patience.
-OPTIONS = tuple(_dissect.option_names())
+#: The piece colours (``#rrggbb``): piece ``i`` is ``PALETTE[i]`` in every
+#: picture (terminal, SVG, PNG, the studio, the page, ``plot``); from
+#: ``dissect_core::palette``, the one palette.
+PALETTE: Tuple[str, ...] = tuple(_dissect.PALETTE)
+#: How ``solve(..., solutions=N)`` ranks the dissections it found
+#: (``dissect solve --rank``; the engine's criteria).
+RANKS: Tuple[str, ...] = tuple(_dissect.RANKS)
+
+#: The options ``solve`` takes as keywords besides seed, time_limit and
+#: threads (the CLI's flags, with ``_`` for ``-``).
+OPTIONS: Tuple[str, ...] = tuple(_dissect.option_names())
+
+#: A cell: ``(x, y)`` on square, tri3 and hex, ``(x, y, t)`` on tri4,
+#: ``(x, y, z)`` on cubic.
+Cell = Tuple[int, ...]
+#: Cells of a figure kept in one piece: a regions grid (the text of
+#: ``dissect solve --keep N:REGIONS.txt``), a list of cell groups, or a dict
+#: of letter to cells.
+Regions = Union[str, Sequence[Sequence[Sequence[int]]], Mapping[str, Sequence[Sequence[int]]]]
+#: ``progress(pieces, seconds, source)``, called for every improvement.
+Progress = Callable[[int, float, str], object]
 
 
-def read_figure(path: Union[str, os.PathLike], lattice: str = "square") -> Figure:
+def read_figure(path: Union[str, "os.PathLike[str]"], lattice: str = "square") -> Figure:
     """A figure from a text file (FORMAT.md); its name is the file's name."""
     with open(path, encoding="utf-8") as f:
         text = f.read()
     return Figure.from_text(text, lattice=lattice, name=os.path.basename(os.fspath(path)))
+
+
+def piece_colour(i: int) -> str:
+    """The colour (``#rrggbb``) of piece ``i`` in every picture:
+    ``PALETTE[i]``, and past the palette the engine's further hues."""
+    return _dissect.piece_colour(i)
+
+
+class Assemblies(NamedTuple):
+    """In how many ways the pieces of a dissection tile one figure."""
+
+    #: The figure's name.
+    figure: str
+    #: Distinct tilings (all of them when ``complete``).
+    tilings: int
+    #: Tilings up to the figure's symmetries.
+    up_to_symmetry: int
+    #: The figure's symmetries (allowed motions mapping it onto itself).
+    figure_symmetries: int
+    #: Whether the count finished (else the numbers are lower bounds).
+    complete: bool
+    #: Seconds the count took.
+    seconds: float
+
+    @property
+    def unique(self) -> bool:
+        """Whether the figure has exactly one tiling up to its symmetries."""
+        return self.complete and self.up_to_symmetry == 1
 
 
 class Dissection:
@@ -77,7 +141,7 @@ class Dissection:
         self.lattice: str = result["lattice"]
         self.mirror: bool = result["mirror"]
         self.names: List[str] = list(result["names"])
-        self.pieces: List[List[List[tuple]]] = result["pieces"]
+        self.pieces: List[List[List[Cell]]] = result["pieces"]
         #: A proved lower bound on the piece count, and why it holds.
         self.lower_bound: Optional[int] = result.get("lower_bound")
         self.lower_bound_reason: Optional[str] = result.get("lower_bound_reason")
@@ -91,10 +155,19 @@ class Dissection:
         self.stopped: bool = bool(result.get("stopped", False))
         #: Whether Ctrl-C (KeyboardInterrupt) ended the search.
         self.interrupted: bool = bool(result.get("interrupted", False))
-        #: Who found it: greedy, search, repair or sat.
+        #: Who found it: greedy, search, repair, sat, coarse or sectors.
         self.found_by: Optional[str] = result.get("found_by")
         #: Why the run ended: optimal, finished, time_limit or interrupted.
         self.end: Optional[str] = result.get("end")
+        #: The engine's scores (pieces, variance, smallest, shapes,
+        #: symmetry, objective, assemblies: the ``rank`` criteria).
+        self.scores: Dict[str, Any] = dict(result.get("scores") or {})
+        #: ``dissect.ray.solve``: Ray tasks per batch, and every batch sent
+        #: to Ray (``dissect.ray.RayBatch``); None for a local run.
+        self.ray_tasks: Optional[int] = None
+        self.ray_batches: Optional[List[Any]] = None
+        #: The ranking criterion of ``solutions``.
+        self.rank: str = result.get("rank") or "variance"
         self._extra = {
             k: result[k]
             for k in ("area_variance", "level", "explorations", "found_by")
@@ -102,6 +175,12 @@ class Dissection:
         }
         # The engine's solution file text (what `dissect solve -o` writes).
         self._json: Optional[str] = result.get("solution_json")
+        #: The different dissections found with the fewest pieces, best
+        #: first by ``rank`` (``solve(..., solutions=N)``: at most N); this
+        #: one is the first.
+        self.solutions: List[Dissection] = [self]
+        for other in list(result.get("solutions") or [])[1:]:
+            self.solutions.append(Dissection(figures, _other_solution(result, other)))
 
     @property
     def piece_count(self) -> int:
@@ -115,20 +194,22 @@ class Dissection:
 
     def to_dict(self) -> Dict[str, Any]:
         """The solution as FORMAT.md's JSON object (a dict)."""
-        return json.loads(self.to_json())
+        value: Dict[str, Any] = json.loads(self.to_json())
+        return value
 
-    def to_json(self, path: Union[str, os.PathLike, None] = None) -> str:
+    def to_json(self, path: Union[str, "os.PathLike[str]", None] = None) -> str:
         """The solution in FORMAT.md form (``dissection-solution/1``), with
-        ``pieces``, ``areas``, ``seed``, ``lower_bound`` and ``optimal`` keys
-        as ``dissect solve`` writes them. Also written to ``path`` if given."""
-        if self._json is not None:
-            text = self._json
-        else:
-            text = self._build_json()
+        ``pieces``, ``areas``, ``seed``, ``lower_bound``, ``optimal`` (and
+        with several solutions ``scores`` and ``rank``) keys as ``dissect
+        solve`` writes them. Also written to ``path`` if given."""
+        text = self._json if self._json is not None else self._build_json()
         if path is not None:
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(text)
+            _write(path, text)
         return text
+
+    def _parts(self) -> Tuple[str, bool, List[str], List[List[List[List[int]]]]]:
+        pieces = [[[list(c) for c in p] for p in fig] for fig in self.pieces]
+        return self.lattice, self.mirror, self.names, pieces
 
     def _build_json(self) -> str:
         extra: Dict[str, Any] = {"pieces": self.piece_count, "areas": self.areas}
@@ -146,14 +227,7 @@ class Dissection:
             extra["lower_bound"] = self.lower_bound
             extra["lower_bound_reason"] = self.lower_bound_reason
             extra["optimal"] = self.optimal
-        text = _dissect.solution_json(
-            self.lattice,
-            self.mirror,
-            self.names,
-            [[list(map(list, p)) for p in fig] for fig in self.pieces],
-            json.dumps(extra),
-        )
-        return text
+        return _dissect.solution_json(*self._parts(), json.dumps(extra))
 
     def verify(self) -> bool:
         """Checks the dissection against its figures with the independent
@@ -161,19 +235,37 @@ class Dissection:
         verify(self.figures, self)
         return True
 
-    def plot(self, ax=None, **kwargs):
-        """Draws the figures side by side, pieces coloured alike in every
-        figure (matplotlib; ``pip install matplotlib``). Returns the axes.
-        ``cubic`` figures are drawn layer by layer."""
+    def assemblies(self, time_limit: Optional[float] = None) -> List[Assemblies]:
+        """In how many ways the pieces tile each figure (the engine's count,
+        as ``dissect assemblies``): every placement the lattice allows,
+        mirror images as the dissection allows them, identical pieces
+        interchangeable; one ``Assemblies`` per figure. ``time_limit``
+        (seconds) bounds each figure's count; Ctrl-C stops it too (then
+        ``complete`` is False and the numbers are lower bounds)."""
+        rows = _dissect.assemblies(self.figures, *self._parts(), time_limit=time_limit)
+        return [Assemblies(**row) for row in rows]
+
+    def plot(self, ax: Any = None, **kwargs: Any) -> Any:
+        """Draws the figures side by side with matplotlib (``pip install
+        matplotlib``), pieces in the colours of every other picture
+        (``PALETTE``), cells and outlines from the engine's lattice
+        geometry; ``cubic`` figures layer by layer. Returns the axes."""
         from ._plot import plot
 
         return plot(self, ax=ax, **kwargs)
 
     def to_svg(self) -> str:
-        """An SVG picture of the pieces (no dependency)."""
-        from ._plot import svg
+        """The SVG picture ``dissect render`` draws (pieces, labels, legend)."""
+        return _dissect.render_svg(*self._parts())
 
-        return svg(self)
+    def to_html(self, path: Union[str, "os.PathLike[str]", None] = None) -> str:
+        """The page to share (``dissect render --html``): one self-contained
+        HTML file showing the pieces move from one figure to another. Also
+        written to ``path`` if given."""
+        text = _dissect.render_html(*self._parts())
+        if path is not None:
+            _write(path, text)
+        return text
 
     def _repr_svg_(self) -> str:
         return self.to_svg()
@@ -182,11 +274,27 @@ class Dissection:
         opt = ", optimal" if self.optimal else ""
         return f"<Dissection {self.lattice}: {len(self.names)} figures, {self.piece_count} pieces{opt}>"
 
-    def __getstate__(self):
+    def __getstate__(self) -> Dict[str, Any]:
         return self.__dict__
 
-    def __setstate__(self, state):
+    def __setstate__(self, state: Dict[str, Any]) -> None:
         self.__dict__.update(state)
+
+
+def _other_solution(result: Dict[str, Any], other: Dict[str, Any]) -> Dict[str, Any]:
+    """The result of solution 2, 3, ... of a run: the run's own keys, the
+    solution's pieces, scores and file."""
+    out = dict(result, solutions=[], history=[], level=None, explorations=None)
+    out.update(other)
+    return out
+
+
+def _write(path: Union[str, "os.PathLike[str]"], text: str) -> None:
+    """Writes ``text`` to ``path`` atomically (a temporary file renamed)."""
+    tmp = f"{os.fspath(path)}.tmp{os.getpid()}"
+    with open(tmp, "w", encoding="utf-8") as f:
+        f.write(text)
+    os.replace(tmp, path)
 
 
 class LowerBound:
@@ -214,39 +322,90 @@ class LowerBound:
         return f"<LowerBound {self.value} ({self.reason})>"
 
 
-def _figures(figures) -> List[Figure]:
+def _figures(figures: Any) -> List[Figure]:
     if isinstance(figures, (Figure, str, bytes)):
         raise ProblemError("figures must be a list of at least two dissect.Figure")
-    figures = list(figures)
-    for i, f in enumerate(figures):
+    out: List[Figure] = []
+    for i, f in builtins.enumerate(figures):
         if not isinstance(f, Figure):
             raise ProblemError(
                 f"figure {i + 1} is a {type(f).__name__}, not a dissect.Figure "
                 "(use Figure.from_text, Figure.from_array or read_figure)"
             )
-    return figures
+        out.append(f)
+    return out
 
 
 def solve(
     figures: Sequence[Figure],
+    *,
     seed: int = 1,
     time_limit: Optional[float] = None,
     threads: int = 0,
+    solutions: int = 1,
+    rank: str = "variance",
+    min_piece: Optional[int] = None,
+    max_piece: Optional[int] = None,
+    checkerboard: bool = False,
+    symmetry_weight: Optional[float] = None,
+    keep: Union[int, Mapping[int, Regions], None] = None,
+    mirror: bool = True,
+    prove: bool = True,
+    exact: bool = False,
+    paper: bool = False,
+    max_pieces: Optional[int] = None,
+    progress: Optional[Progress] = None,
     **options: Any,
 ) -> Dissection:
     """Finds a dissection of ``figures`` into as few connected pieces as it
-    can: the same search, options and results as ``dissect solve`` for the
-    same seed (whatever ``threads`` is).
+    can: the run ``dissect solve`` makes, with its options under their
+    Python names, and the same answer for the same seed (whatever
+    ``threads`` is). Every option is checked by the engine's rules.
 
-    ``time_limit`` (seconds) and Ctrl-C stop the search and return the best
-    dissection found so far (``.stopped`` / ``.interrupted`` say so). The
-    options are the CLI's flags: see ``dissect.OPTIONS``. Raises
-    ``NoDissectionFound`` when the search ends without one, ``ProblemError``
-    for figures that cannot be dissected together, ``OptionError`` for a bad
-    option.
+    * ``seed``, ``threads`` (0: one per core), ``time_limit`` (seconds; it
+      and Ctrl-C return the best dissection found so far, ``.stopped`` /
+      ``.interrupted`` say so), ``max_pieces``.
+    * ``solutions=N``: up to N different dissections with the fewest
+      pieces, ranked by ``rank`` (one of ``RANKS``); ``d.solutions`` lists
+      them best first (``d`` is the first), each with its ``scores``.
+    * The designer's constraints: ``min_piece`` / ``max_piece`` (cells per
+      piece), ``checkerboard=True`` (every piece keeps its cells' colours;
+      square and cubic), ``symmetry_weight`` (favour symmetric pieces) and
+      ``keep={figure_index: regions}``: cells of figure ``figure_index``
+      (0-based) that end in one piece, as a regions grid (letters a-z over
+      the figure's text), a list of cell groups, or a dict of letter to
+      cells. ``keep=NB`` (a number) is the candidates kept per level.
+    * ``mirror=False``: pieces are not turned over; ``prove=False``: no
+      exact lower bound beside the search; ``exact=True``: SAT alone;
+      ``paper=True``: the paper's schedule.
+    * ``progress(pieces, seconds, source)`` is called with every
+      improvement as the run finds it (e.g. to move a tqdm bar); an
+      exception it raises stops the run and is raised.
+    * The solver's tuning: see ``OPTIONS`` (``explorations=100``, ...).
+
+    Raises ``NoDissectionFound`` when the search ends without one (or the
+    constraints cannot hold), ``ProblemError`` for figures that cannot be
+    dissected together, ``OptionError`` for a bad option.
     """
     figures = _figures(figures)
-    result = _dissect.solve(figures, seed=seed, time_limit=time_limit, threads=threads, **options)
+    given: Dict[str, Any] = dict(
+        solutions=solutions,
+        rank=rank,
+        min_piece=min_piece,
+        max_piece=max_piece,
+        checkerboard=checkerboard,
+        symmetry_weight=symmetry_weight,
+        keep=keep,
+        mirror=mirror,
+        prove=prove,
+        exact=exact,
+        paper=paper,
+        max_pieces=max_pieces,
+    )
+    options.update({k: v for k, v in given.items() if v is not None})
+    result = _dissect.solve(
+        figures, seed=seed, time_limit=time_limit, threads=threads, progress=progress, **options
+    )
     return Dissection(figures, result)
 
 
@@ -264,7 +423,10 @@ def bound(
     return LowerBound(figures, result)
 
 
-def verify(figures: Sequence[Figure], solution) -> int:
+def verify(
+    figures: Sequence[Figure],
+    solution: Union[Dissection, Dict[str, Any], str, "os.PathLike[str]"],
+) -> int:
     """Checks ``solution`` (a ``Dissection``, a FORMAT.md dict, JSON text, or
     the path of a solution file) against ``figures`` with the independent
     verifier. Returns the piece count; raises ``InvalidSolution`` listing
@@ -286,3 +448,7 @@ def verify(figures: Sequence[Figure], solution) -> int:
             f"a solution is a Dissection, a dict, JSON text or a path, not {type(solution).__name__}"
         )
     return _dissect.verify(figures, text)
+
+
+# ``dissect.enumerate`` (the builtin stays ``builtins.enumerate`` in here).
+from ._enumerate import Enumeration, enumerate_dissections as enumerate  # noqa: E402,A001

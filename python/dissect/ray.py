@@ -13,7 +13,8 @@ shares the driver's environment).
 
 from __future__ import annotations
 
-from typing import Any, Dict, List, Optional, Sequence, Union
+import os
+from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 try:
     import ray
@@ -23,13 +24,26 @@ except ImportError as e:  # pragma: no cover - depends on the environment
     ) from e
 
 import dissect
-from dissect import Dissection, Figure
+from dissect import Dissection, Figure, _dissect
 
-__all__ = ["solve_many", "solve"]
-
-from dissect import _dissect
+__all__ = ["solve_many", "solve", "RayBatch"]
 
 Problem = Union[Sequence[Figure], Dict[str, Any]]
+
+
+class RayBatch(NamedTuple):
+    """One batch of explorations ``dissect.ray.solve`` sent to Ray."""
+
+    #: The round, level and descent of the level search it belongs to.
+    round: int
+    level: int
+    descent: bool
+    #: How many explorations it held.
+    explorations: int
+    #: How many Ray tasks it was cut into.
+    tasks: int
+    #: The process ids of the Ray workers that ran them.
+    workers: Tuple[int, ...]
 
 
 @ray.remote
@@ -37,7 +51,7 @@ def _solve_task(figures: List[Figure], options: Dict[str, Any]) -> Dissection:
     return dissect.solve(figures, **options)
 
 
-def _split(problem: Problem, options: Dict[str, Any]):
+def _split(problem: Problem, options: Dict[str, Any]) -> Tuple[List[Figure], Dict[str, Any]]:
     if isinstance(problem, dict):
         problem = dict(problem)
         try:
@@ -76,7 +90,7 @@ def solve_many(
         try:
             out.append(ray.get(ref))
         except ray.exceptions.RayTaskError as e:
-            cause = e.as_instanceof_cause()
+            cause: Exception = e.as_instanceof_cause()  # type: ignore[no-untyped-call]
             if not return_exceptions:
                 for r in refs:
                     ray.cancel(r)
@@ -91,21 +105,32 @@ _explorers: Dict[bytes, Any] = {}
 
 
 @ray.remote
-def _explore_task(key: bytes, problem, round_: int, level: int, descent: bool, indices: List[int], parents: List[bytes]):
+def _explore_task(
+    key: bytes,
+    problem: Tuple[List[Figure], int, Dict[str, Any]],
+    round_: int,
+    level: int,
+    descent: bool,
+    indices: List[int],
+    parents: List[bytes],
+) -> Tuple[int, List[bytes]]:
     explorer = _explorers.get(key)
     if explorer is None:
         figures, seed, options = problem
         explorer = _dissect.Explorer(figures, seed=seed, **options)
         _explorers.clear()
         _explorers[key] = explorer
-    return explorer.explore(round_, level, descent, indices, parents)
+    return os.getpid(), explorer.explore(round_, level, descent, indices, parents)
 
 
 class _RayExecutor:
     """Sends each batch of explorations to Ray as ``tasks`` tasks of
-    consecutive indices and returns their results in index order."""
+    consecutive indices, returns their results in index order, and records
+    every batch it sent (``batches``)."""
 
-    def __init__(self, figures, seed, options, tasks):
+    def __init__(
+        self, figures: List[Figure], seed: int, options: Dict[str, Any], tasks: int
+    ) -> None:
         import hashlib
         import pickle
 
@@ -113,10 +138,12 @@ class _RayExecutor:
         self.key = hashlib.sha256(pickle.dumps(problem)).digest()
         self.problem = ray.put(problem)
         self.tasks = tasks
-        self._parents = (None, None)
-        self.batches = 0
+        self._parents: Tuple[Any, Any] = (None, None)
+        self.batches: List[RayBatch] = []
 
-    def __call__(self, round_, level, descent, start, end, parents):
+    def __call__(
+        self, round_: int, level: int, descent: bool, start: int, end: int, parents: List[bytes]
+    ) -> List[bytes]:
         # The parents are the same for every batch of a level: put them once.
         key = (round_, level, descent, len(parents), parents[:1])
         if self._parents[0] != key:
@@ -129,10 +156,14 @@ class _RayExecutor:
             _explore_task.remote(self.key, self.problem, round_, level, descent, c, parents_ref)
             for c in chunks
         ]
-        self.batches += 1
         out: List[bytes] = []
-        for part in ray.get(refs):
+        workers = []
+        for pid, part in ray.get(refs):
+            workers.append(pid)
             out.extend(part)
+        self.batches.append(
+            RayBatch(round_, level, descent, len(indices), len(refs), tuple(sorted(set(workers))))
+        )
         return out
 
 
@@ -149,24 +180,34 @@ def solve(
     level loop (and the exact lower bound and repair beside it) runs here
     and gets the results back in index order, so the answer is the same as
     ``dissect.solve``'s for the same seed and options when no time limit
-    (or Ctrl-C) stops the search. Worth it when
-    explorations are expensive (large figures, many explorations, many
-    machines); on small figures Ray's per-batch overhead dominates (see
-    BENCHMARKS.md).
+    (or Ctrl-C) stops the search. Worth it when explorations are expensive
+    (large figures, many explorations, many machines); on small figures
+    Ray's per-batch overhead dominates (see BENCHMARKS.md).
+
+    The dissection records what Ray did: ``ray_tasks`` (tasks per batch)
+    and ``ray_batches`` (every batch sent, a ``RayBatch`` each).
     """
     figures = dissect._figures(figures)
     if tasks is None:
-        tasks = max(1, int(ray.cluster_resources().get("CPU", 1)))
+        cpus = ray.cluster_resources().get("CPU", 1)  # type: ignore[no-untyped-call]
+        tasks = max(1, int(cpus))
     if tasks < 1:
         raise dissect.OptionError(f"tasks must be at least 1, got {tasks}")
     options.pop("threads", None)  # the workers run one exploration at a time
+    progress = options.pop("progress", None)
     # Checks the options here, with the problem, before anything is sent.
     _dissect.Explorer(figures, seed=seed, **options)
     executor = _RayExecutor(figures, seed, options, tasks)
     result = _dissect.solve(
-        figures, seed=seed, time_limit=time_limit, threads=1, executor=executor, **options
+        figures,
+        seed=seed,
+        time_limit=time_limit,
+        threads=1,
+        executor=executor,
+        progress=progress,
+        **options,
     )
     d = Dissection(figures, result)
-    d.ray_tasks = tasks  #: Ray tasks per batch
-    d.ray_batches = executor.batches  #: batches sent to Ray
+    d.ray_tasks = tasks
+    d.ray_batches = list(executor.batches)
     return d

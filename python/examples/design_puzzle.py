@@ -13,13 +13,14 @@ puzzle/puzzle.svg (without).
 
 import argparse
 import os
+from typing import List
 
 import numpy as np
 
 import dissect
 
 
-def figures():
+def figures() -> List[dissect.Figure]:
     """The two figures, drawn as boolean arrays (row y, column x)."""
     two_squares = np.zeros((4, 8), dtype=bool)
     two_squares[1:4, 0:3] = True  # the 3x3 square
@@ -31,7 +32,7 @@ def figures():
     ]
 
 
-def main():
+def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default="puzzle", help="output folder (default: puzzle)")
     ap.add_argument("--seed", type=int, default=1)
@@ -41,10 +42,23 @@ def main():
     a, b = figures()
     print(f"{a.name}: {a.area} cells; {b.name}: {b.area} cells")
     print(a.to_text())
-    d = dissect.solve([a, b], seed=args.seed, time_limit=args.time_limit)
+    d = dissect.solve(
+        [a, b],
+        seed=args.seed,
+        time_limit=args.time_limit,
+        solutions=2,  # the two best different dissections, ranked
+        rank="smallest",  # by their smallest piece, largest first
+        min_piece=3,  # no piece under 3 cells
+        progress=lambda pieces, seconds, by: print(f"  {pieces} pieces at {seconds:.2f} s ({by})"),
+    )
     d.verify()  # the independent verifier; raises if anything is wrong
     state = "optimal" if d.optimal else f"lower bound {d.lower_bound}"
-    print(f"{d.piece_count} pieces ({state}), areas {d.areas}, {d.seconds:.2f} s")
+    print(f"{d.piece_count} pieces ({state}), areas {d.areas}, {d.seconds or 0:.2f} s")
+    for s in d.solutions:
+        s.verify()
+        print(f"  solution: smallest piece {s.scores['smallest']}, areas {s.areas}")
+    for c in d.assemblies(time_limit=10):
+        print(f"  {c.figure}: {c.tilings} tilings, {c.up_to_symmetry} up to its symmetries")
 
     os.makedirs(args.out, exist_ok=True)
     d.to_json(os.path.join(args.out, "puzzle.json"))

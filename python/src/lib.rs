@@ -10,8 +10,12 @@
 
 use pyo3::prelude::*;
 
+mod assemblies;
+mod enumerate;
 mod errors;
 mod figure;
+mod picture;
+mod puzzle;
 mod run;
 mod solve;
 
@@ -24,6 +28,17 @@ fn _dissect(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(solve::verify, m)?)?;
     m.add_function(wrap_pyfunction!(solve::solution_json, m)?)?;
     m.add_function(wrap_pyfunction!(solve::option_names, m)?)?;
+    m.add_function(wrap_pyfunction!(assemblies::assemblies, m)?)?;
+    m.add_function(wrap_pyfunction!(picture::piece_colour, m)?)?;
+    m.add_function(wrap_pyfunction!(picture::render_svg, m)?)?;
+    m.add_function(wrap_pyfunction!(picture::render_html, m)?)?;
+    m.add_function(wrap_pyfunction!(picture::drawing, m)?)?;
+    m.add("PALETTE", picture::palette())?;
+    m.add(
+        "RANKS",
+        dissect_engine::Rank::ALL.map(|r| r.name()).to_vec(),
+    )?;
+    m.add_function(wrap_pyfunction!(enumerate::enumerate, m)?)?;
     m.add("LATTICES", lattice_names())?;
     Ok(())
 }

@@ -13,6 +13,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Condvar, Mutex};
 use std::time::{Duration, Instant};
 
+use dissect_engine::TimeLimit;
+
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 
@@ -35,8 +37,30 @@ pub(crate) fn watched<T: Send>(
     deadline: Option<Instant>,
     work: impl FnOnce() -> T + Send,
 ) -> PyResult<Watched<T>> {
+    watched_polling(py, stop, deadline, &mut |_| Ok(()), work)
+}
+
+/// [`watched`], calling `poll` with the GIL on the calling thread at every
+/// wake (every 50 ms) and once more after the work ended: how events the
+/// work queued reach Python callbacks (`progress=`). An exception `poll`
+/// raises stops the work and is handed back like Ctrl-C's.
+pub(crate) fn watched_polling<T: Send>(
+    py: Python<'_>,
+    stop: &AtomicBool,
+    deadline: Option<Instant>,
+    poll: &mut dyn FnMut(Python<'_>) -> PyResult<()>,
+    work: impl FnOnce() -> T + Send,
+) -> PyResult<Watched<T>> {
     let done = (Mutex::new(false), Condvar::new());
     let mut interrupted = None;
+    let mut poll_now = |interrupted: &mut Option<PyErr>| {
+        if interrupted.is_none() {
+            if let Err(e) = poll(py) {
+                stop.store(true, Ordering::SeqCst);
+                *interrupted = Some(e);
+            }
+        }
+    };
     let value = std::thread::scope(|s| {
         let worker = s.spawn(|| {
             let value = work();
@@ -58,6 +82,7 @@ pub(crate) fn watched<T: Send>(
                     .unwrap_or_else(|e| e.into_inner());
                 *guard
             });
+            poll_now(&mut interrupted);
             if finished {
                 break;
             }
@@ -84,16 +109,18 @@ pub(crate) fn watched<T: Send>(
     Ok(Watched { value, interrupted })
 }
 
-/// The instant `seconds` from now; None for no limit (None or infinity).
-/// Errors on NaN or negative values.
-pub(crate) fn deadline(seconds: Option<f64>) -> Result<Option<Instant>, String> {
-    match seconds {
-        None => Ok(None),
-        Some(t) if t.is_nan() || t < 0.0 => Err(format!(
-            "time_limit must be a number of seconds >= 0, got {t}"
-        )),
-        Some(t) => Ok(Duration::try_from_secs_f64(t)
-            .ok()
-            .and_then(|d| Instant::now().checked_add(d))),
-    }
+/// `time_limit=` by the engine's [`TimeLimit`] rule; the error in Python's
+/// words (`time_limit must be ...`).
+pub(crate) fn time_limit(seconds: Option<f64>) -> Result<TimeLimit, String> {
+    TimeLimit::from_option(seconds).map_err(|e| e.to_string().replace("--time-limit", "time_limit"))
+}
+
+/// `threads=` by the engine's rule ([`dissect_engine::check_threads`]).
+pub(crate) fn threads(threads: usize) -> Result<usize, String> {
+    dissect_engine::check_threads(threads).map_err(|_| {
+        format!(
+            "threads={threads} is too many (at most {}; 0 means one per core)",
+            dissect_engine::MAX_THREADS
+        )
+    })
 }

@@ -1,20 +1,23 @@
 //! `solve`, `bound`, `verify` and the solution JSON writer.
 
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 
 use dissect_core::io::parse_solution;
 use dissect_core::solver::{self, Batch, Executor, Exploration};
 use dissect_core::Dissection;
 use dissect_core::{Figure, LatticeKind};
-use dissect_engine::{End, EngineError, RunConfig, RunOptions, Strategy};
-use dissect_exact::{ExactOptions, Mode};
+use dissect_engine::{
+    BoundConfig, ConstraintError, End, EngineError, EngineEvent, EngineObserver, Improvement,
+    OptionsError, Report, RunConfig, RunOptions, Scores, Strategy,
+};
+use dissect_puzzle::Motions;
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
 use crate::errors::{error, Kind};
 use crate::figure::{cells_to_py, PyFigure};
-use crate::run::{deadline, watched};
+use crate::run::{watched, watched_polling};
 
 /// The options `solve` takes as keywords: `dissect solve`'s flags
 /// (`no_mirror` is `mirror=False`, `no_prove` is `prove=False`).
@@ -37,10 +40,15 @@ const OPTION_NAMES: [&str; 16] = [
     "repair",
 ];
 
-/// The names of the options `solve` accepts besides seed, time_limit and threads.
+/// The names of the options `solve` accepts besides seed, time_limit and
+/// threads: the solver's and the puzzle's ([`crate::puzzle::NAMES`]).
 #[pyfunction]
 pub(crate) fn option_names() -> Vec<&'static str> {
-    OPTION_NAMES.to_vec()
+    OPTION_NAMES
+        .iter()
+        .chain(&crate::puzzle::NAMES)
+        .copied()
+        .collect()
 }
 
 /// The figures of a call: the core's figures and their names (a figure's
@@ -100,7 +108,7 @@ pub(crate) fn problem(
 }
 
 /// An engine message in Python's words: `--split-tries` becomes `split_tries`.
-fn python_words(message: &str) -> String {
+pub(crate) fn python_words(message: &str) -> String {
     message
         .split(' ')
         .map(|w| match w.strip_prefix("--") {
@@ -112,24 +120,21 @@ fn python_words(message: &str) -> String {
 }
 
 /// The run settings of a call, checked by the engine as `dissect solve`'s
-/// flags are.
+/// flags are (`figures`: the problem's, for keep regions). Constraints
+/// that cannot hold raise `NoDissectionFound`, as `dissect solve` exits 1.
 pub(crate) fn run_options(
     py: Python<'_>,
     seed: u64,
     threads: usize,
     time_limit: Option<f64>,
     kwargs: Option<&Bound<'_, PyDict>>,
+    figures: &[Figure],
 ) -> PyResult<RunOptions> {
     let bad = |m: String| error(py, Kind::Option, m);
-    if threads > 256 {
-        return Err(bad(format!(
-            "threads={threads} is too many (at most 256; 0 means one per core)"
-        )));
-    }
     let mut c = RunConfig {
         seed,
-        threads,
-        time_limit,
+        threads: crate::run::threads(threads).map_err(bad)?,
+        time_limit: crate::run::time_limit(time_limit).map_err(bad)?,
         ..RunConfig::default()
     };
     let (mut paper, mut exact) = (false, false);
@@ -154,6 +159,7 @@ pub(crate) fn run_options(
                 v.extract::<bool>()
             };
             match key.as_str() {
+                _ if crate::puzzle::apply(py, &mut c, &key, &value, figures)? => {}
                 "mirror" => c.mirror = boolean(&value)?,
                 "max_pieces" => {
                     c.max_pieces = if value.is_none() {
@@ -179,7 +185,7 @@ pub(crate) fn run_options(
                 _ => {
                     return Err(bad(format!(
                         "unknown option {key:?}; solve takes seed, time_limit, threads and {}",
-                        OPTION_NAMES.join(", ")
+                        option_names().join(", ")
                     )))
                 }
             }
@@ -191,7 +197,37 @@ pub(crate) fn run_options(
         (false, true) => Strategy::Exact,
         (false, false) => Strategy::Anytime,
     };
-    RunOptions::new(c).map_err(|e| bad(python_words(&e.to_string())))
+    match RunOptions::new(c) {
+        Ok(o) => Ok(o),
+        Err(OptionsError::Constraints(e)) if e.is_impossible() => Err(impossible(py, &e)),
+        Err(e) => Err(bad(python_words(&e.to_string()))),
+    }
+}
+
+/// `NoDissectionFound` for constraints that cannot hold (`dissect solve`'s
+/// words).
+fn impossible(py: Python<'_>, e: &ConstraintError) -> PyErr {
+    error(
+        py,
+        Kind::NotFound,
+        format!(
+            "no dissection found: the constraints cannot all hold: {}",
+            python_words(&e.to_string())
+        ),
+    )
+}
+
+/// [`dissect_engine::check`]: the figures make a problem and the options'
+/// constraints fit them, before anything runs.
+pub(crate) fn check(py: Python<'_>, figures: &[Figure], options: &RunOptions) -> PyResult<()> {
+    match dissect_engine::check(figures, options) {
+        Ok(()) => Ok(()),
+        Err(EngineError::Constraints(e)) if e.is_impossible() => Err(impossible(py, &e)),
+        Err(EngineError::Constraints(e)) => {
+            Err(error(py, Kind::Option, python_words(&e.to_string())))
+        }
+        Err(e) => Err(error(py, Kind::Problem, e.to_string())),
+    }
 }
 
 /// Runs batches of explorations through a Python callable
@@ -256,7 +292,7 @@ impl PyExplorer {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyExplorer> {
         let (figs, _) = problem(py, &figures)?;
-        let opts = run_options(py, seed, 1, None, options)?.solver_options();
+        let opts = run_options(py, seed, 1, None, options, &figs)?.solver_options();
         let explorer = solver::Explorer::new(&figs, &opts)
             .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
         Ok(PyExplorer { explorer })
@@ -296,12 +332,40 @@ impl PyExplorer {
     }
 }
 
+/// Queues a run's improvements (from the engine's threads) for the
+/// `progress=` callable, which the calling thread calls with the GIL.
+#[derive(Default)]
+struct Improvements(Mutex<Vec<Improvement>>);
+
+impl EngineObserver for Improvements {
+    fn on_event(&self, event: &EngineEvent<'_>) {
+        if let EngineEvent::Improved(i) = event {
+            self.0.lock().unwrap_or_else(|e| e.into_inner()).push(*i);
+        }
+    }
+}
+
+impl Improvements {
+    /// Calls `progress(pieces, seconds, source)` for every queued
+    /// improvement, in order.
+    fn deliver(&self, progress: &Bound<'_, PyAny>) -> PyResult<()> {
+        let events = std::mem::take(&mut *self.0.lock().unwrap_or_else(|e| e.into_inner()));
+        for i in events {
+            progress.call1((i.pieces, i.seconds, i.source.name()))?;
+        }
+        Ok(())
+    }
+}
+
 /// Finds a dissection (see `dissect.solve`) by `dissect_engine::run`, the
 /// run `dissect solve` makes; returns a dict the Python half turns into a
 /// `Dissection`. With `executor` (see [`PyExecutor`]) the heuristic's
-/// explorations run wherever it sends them.
+/// explorations run wherever it sends them; `progress(pieces, seconds,
+/// source)` is called on this thread for every improvement, soon after it
+/// happens (an exception it raises stops the run and is raised).
 #[pyfunction]
-#[pyo3(signature = (figures, seed = 1, time_limit = None, threads = 0, executor = None, **options))]
+#[pyo3(signature = (figures, seed = 1, time_limit = None, threads = 0, executor = None, progress = None, **options))]
+#[allow(clippy::too_many_arguments)] // Python keywords
 pub(crate) fn solve<'py>(
     py: Python<'py>,
     figures: Vec<PyRef<'py, PyFigure>>,
@@ -309,21 +373,49 @@ pub(crate) fn solve<'py>(
     time_limit: Option<f64>,
     threads: usize,
     executor: Option<Py<PyAny>>,
+    progress: Option<Bound<'py, PyAny>>,
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (figs, names) = problem(py, &figures)?;
-    let lattice = figs[0].lattice();
-    let run_options = run_options(py, seed, threads, time_limit, options)?;
+    let run_options = run_options(py, seed, threads, time_limit, options, &figs)?;
+    check(py, &figs, &run_options)?;
+    if let Some(p) = &progress {
+        if !p.is_callable() {
+            return Err(error(
+                py,
+                Kind::Option,
+                format!(
+                    "progress must be a callable (pieces, seconds, source), got {}",
+                    p.get_type().name()?
+                ),
+            ));
+        }
+    }
     let executor = executor.map(|call| PyExecutor {
         call,
         error: Mutex::new(None),
     });
     let stop = AtomicBool::new(false);
-    // The engine keeps the time limit; the watcher only turns Ctrl-C into `stop`.
-    let run = watched(py, &stop, None, || {
+    let queue = Improvements::default();
+    let mut callback_error = None;
+    let mut poll = |_: Python<'_>| -> PyResult<()> {
+        if let (Some(p), None) = (&progress, &callback_error) {
+            if let Err(e) = queue.deliver(p) {
+                stop.store(true, Ordering::SeqCst);
+                callback_error = Some(e);
+            }
+        }
+        Ok(())
+    };
+    // The engine keeps the time limit; the watcher turns Ctrl-C into `stop`
+    // and hands the queued improvements to `progress`.
+    let run = watched_polling(py, &stop, None, &mut poll, || {
         let ex = executor.as_ref().map(|e| e as &dyn Executor);
-        dissect_engine::run_with(&figs, &names, &run_options, &stop, &(), ex)
+        dissect_engine::run_with(&figs, &names, &run_options, &stop, &queue, ex)
     })?;
+    if let Some(e) = callback_error {
+        return Err(e);
+    }
     if let Some(e) = executor.and_then(|e| e.error.into_inner().unwrap_or_else(|p| p.into_inner()))
     {
         return Err(e);
@@ -331,49 +423,69 @@ pub(crate) fn solve<'py>(
     let report = match run.value {
         Ok(r) => r,
         Err(e @ EngineError::Figures(_)) => return Err(error(py, Kind::Problem, e.to_string())),
+        Err(EngineError::Constraints(e)) if e.is_impossible() => return Err(impossible(py, &e)),
         Err(e) => return Err(pyo3::exceptions::PyRuntimeError::new_err(e.to_string())),
     };
-    let Some(best) = &report.best else {
+    if report.best.is_none() {
         if let Some(e) = run.interrupted {
             return Err(e);
         }
-        let why = match report.end {
-            End::TimeLimit => format!(
-                "the time limit of {} s was reached",
-                time_limit.unwrap_or_default()
-            ),
-            _ => match run_options.config().max_pieces {
-                Some(k) => format!("max_pieces={k} was reached"),
-                None => "every piece count was tried".to_string(),
-            },
-        };
-        return Err(error(
-            py,
-            Kind::NotFound,
-            format!(
-                "no dissection found: {why} after {:.1} s; the best candidate ({} pieces) had matching score E_M = {}; lower bound: {} ({})",
-                report.seconds,
-                report.last_pieces.max(1),
-                report.best_mismatch.map_or("n/a".to_string(), |m| m.to_string()),
-                report.lower_bound.value,
-                report.lower_bound.reason,
-            ),
-        ));
+        return Err(not_found(py, &report, &run_options));
+    }
+    let out = report_to_py(py, &report, &names, &run_options)?;
+    out.set_item(
+        "interrupted",
+        report.end == End::Interrupted || run.interrupted.is_some(),
+    )?;
+    Ok(out)
+}
+
+/// `NoDissectionFound` for a run that ended without a dissection, saying
+/// why and how close it came (`dissect solve`'s words).
+fn not_found(py: Python<'_>, report: &Report, options: &RunOptions) -> PyErr {
+    let why = match report.end {
+        End::TimeLimit => format!(
+            "the time limit of {} s was reached",
+            options.config().time_limit.seconds().unwrap_or_default()
+        ),
+        _ => match options.config().max_pieces {
+            Some(k) => format!("max_pieces={k} was reached"),
+            None => "every piece count was tried".to_string(),
+        },
     };
+    error(
+        py,
+        Kind::NotFound,
+        format!(
+            "no dissection found: {why} after {:.1} s; the best candidate ({} pieces) had matching score E_M = {}; lower bound: {} ({})",
+            report.seconds,
+            report.last_pieces.max(1),
+            report.best_mismatch.map_or("n/a".to_string(), |m| m.to_string()),
+            report.lower_bound.value,
+            report.lower_bound.reason,
+        ),
+    )
+}
+
+/// A run's report with a dissection as the dict `dissect.Dissection` reads.
+fn report_to_py<'py>(
+    py: Python<'py>,
+    report: &Report,
+    names: &[String],
+    options: &RunOptions,
+) -> PyResult<Bound<'py, PyDict>> {
+    let best = report.best.as_ref().expect("a dissection was found");
+    let lattice = best.dissection().lattice();
     let out = PyDict::new(py);
     out.set_item("lattice", lattice.name())?;
     out.set_item("mirror", best.dissection().mirror())?;
-    out.set_item("names", names.clone())?;
+    out.set_item("names", names.to_vec())?;
     out.set_item("pieces", pieces_to_py(py, lattice, best.pieces())?)?;
     out.set_item("level", report.level)?;
     out.set_item("area_variance", best.variance())?;
     out.set_item("explorations", report.explorations)?;
     out.set_item("rounds", report.rounds)?;
     out.set_item("stopped", report.end.stopped())?;
-    out.set_item(
-        "interrupted",
-        report.end == End::Interrupted || run.interrupted.is_some(),
-    )?;
     out.set_item(
         "end",
         match report.end {
@@ -403,7 +515,53 @@ pub(crate) fn solve<'py>(
     }
     out.set_item("history", rows)?;
     out.set_item("solution_json", report.solution_json())?;
+    // The different dissections, best first; a run that did not collect
+    // them has its best alone, scored as the engine scores them.
+    let solutions = PyList::empty(py);
+    if report.solutions.is_empty() {
+        let motions = Motions::new(lattice, best.dissection().mirror());
+        let weight = options.config().constraints.symmetry_weight();
+        let scores = Scores::weighted(&motions, &best.pieces()[0], weight);
+        out.set_item("scores", scores_to_py(py, &scores)?)?;
+    }
+    for (i, s) in report.solutions.iter().enumerate() {
+        let row = PyDict::new(py);
+        row.set_item("pieces", pieces_to_py(py, lattice, s.dissection.pieces())?)?;
+        row.set_item("area_variance", s.dissection.variance())?;
+        row.set_item("scores", scores_to_py(py, &s.scores)?)?;
+        row.set_item("found_by", s.source.name())?;
+        row.set_item(
+            "optimal",
+            s.dissection.piece_count() <= report.lower_bound.value,
+        )?;
+        row.set_item("solution_json", report.solution_json_at(i))?;
+        if i == 0 {
+            out.set_item("scores", scores_to_py(py, &s.scores)?)?;
+        }
+        solutions.append(row)?;
+    }
+    out.set_item("solutions", solutions)?;
+    out.set_item(
+        "rank",
+        report
+            .ranking
+            .as_ref()
+            .map_or(options.config().rank.name(), |r| r.rank.name()),
+    )?;
     Ok(out)
+}
+
+/// A dissection's scores (`dissect_engine::Scores`) as a dict.
+fn scores_to_py<'py>(py: Python<'py>, s: &Scores) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("pieces", s.pieces)?;
+    d.set_item("variance", s.variance)?;
+    d.set_item("smallest", s.smallest)?;
+    d.set_item("shapes", s.shapes)?;
+    d.set_item("symmetry", s.symmetry)?;
+    d.set_item("objective", s.objective)?;
+    d.set_item("assemblies", s.assemblies)?;
+    Ok(d)
 }
 
 /// `pieces[f][i]` as nested Python lists of cell tuples.
@@ -436,35 +594,32 @@ pub(crate) fn bound<'py>(
     let (figs, names) = problem(py, &figures)?;
     let lattice = figs[0].lattice();
     let mirror = mirror && lattice.lattice().supports_mirror();
-    let deadline = deadline(time_limit).map_err(|m| error(py, Kind::Option, m))?;
-    let options = ExactOptions {
+    let config = BoundConfig {
         mirror,
-        mode: Mode::LowerBound,
-        deadline,
         max_pieces,
-        ..ExactOptions::default()
+        time_limit: crate::run::time_limit(time_limit).map_err(|m| error(py, Kind::Option, m))?,
     };
+    // The engine keeps the time limit; the watcher raises `stop` on Ctrl-C.
     let stop = AtomicBool::new(false);
-    let upper = AtomicUsize::new(usize::MAX);
-    let run = watched(py, &stop, deadline, || {
-        dissect_exact::search(&figs, &options, &stop, &upper, &())
+    let run = watched(py, &stop, None, || {
+        dissect_engine::bound(&figs, &names, &config, &stop, &())
     })?;
-    let outcome = run
+    let report = run
         .value
         .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
     let out = PyDict::new(py);
-    out.set_item("value", outcome.lower_bound.value)?;
-    out.set_item("reason", outcome.lower_bound.describe(&names))?;
+    out.set_item("value", report.lower_bound.value)?;
+    out.set_item("reason", report.lower_bound.reason.clone())?;
     out.set_item(
         "stopped",
-        outcome.stopped || run.interrupted.is_some() || stop.load(Ordering::SeqCst),
+        report.stopped() || run.interrupted.is_some() || stop.load(Ordering::SeqCst),
     )?;
     out.set_item("interrupted", run.interrupted.is_some())?;
     out.set_item("lattice", lattice.name())?;
     out.set_item("mirror", mirror)?;
     out.set_item("names", names)?;
-    match &outcome.found {
-        Some(p) => out.set_item("pieces", pieces_to_py(py, lattice, p)?)?,
+    match &report.found {
+        Some(v) => out.set_item("pieces", pieces_to_py(py, lattice, v.pieces())?)?,
         None => out.set_item("pieces", py.None())?,
     }
     Ok(out)
@@ -504,9 +659,22 @@ pub(crate) fn solution_json(
     pieces: Vec<Vec<Vec<Vec<i64>>>>,
     extra: &str,
 ) -> PyResult<String> {
-    let kind = crate::figure::lattice(py, lattice)?;
     let extra: serde_json::Map<String, serde_json::Value> = serde_json::from_str(extra)
         .map_err(|e| error(py, Kind::Option, format!("extra keys: {e}")))?;
+    let d = dissection_from_py(py, lattice, mirror, names, &pieces)?;
+    Ok(d.to_file(extra).to_json())
+}
+
+/// A dissection from its parts as Python holds them (`pieces[f][i]`: the
+/// cells of piece `i` in figure `f`, as coordinate lists); not verified.
+pub(crate) fn dissection_from_py(
+    py: Python<'_>,
+    lattice: &str,
+    mirror: bool,
+    names: Vec<String>,
+    pieces: &[Vec<Vec<Vec<i64>>>],
+) -> PyResult<Dissection> {
+    let kind = crate::figure::lattice(py, lattice)?;
     let pieces = pieces
         .iter()
         .map(|fig| {
@@ -520,7 +688,6 @@ pub(crate) fn solution_json(
                 .collect::<PyResult<Vec<_>>>()
         })
         .collect::<PyResult<Vec<_>>>()?;
-    let d = Dissection::new(kind, mirror, names, pieces)
-        .map_err(|e| error(py, Kind::Option, e.to_string()))?;
-    Ok(d.to_file(extra).to_json())
+    Dissection::new(kind, mirror, names, pieces)
+        .map_err(|e| error(py, Kind::InvalidSolution, e.to_string()))
 }

@@ -8,6 +8,7 @@ import subprocess
 import sys
 import warnings
 from pathlib import Path
+from typing import List, Sequence, Tuple
 
 import pytest
 
@@ -18,17 +19,19 @@ INSTANCES = REPO / "instances"
 CHECK_SOLUTION = REPO / "tools" / "check_solution.py"
 VERIFY_PY = Path(os.environ.get("DISSECT_VERIFY",
                                 REPO.parent / "shared" / "tools" / "verify.py"))
-_skipped = []
+_skipped: List[bool] = []
 
 
-def instance(name, lattice):
+def instance(name: str, lattice: str) -> Tuple[List[dissect.Figure], List[Path]]:
     """The figures of an instance of instances/, named after their files."""
     d = INSTANCES / name
     files = sorted(p for p in d.iterdir() if p.suffix == ".txt")
     return [dissect.read_figure(p, lattice=lattice) for p in files], files
 
 
-def _run_checker(script, dissection, sol, files):
+def _run_checker(
+    script: Path, dissection: dissect.Dissection, sol: Path, files: Sequence[Path]
+) -> str:
     r = subprocess.run(
         [sys.executable, str(script), "--lattice", dissection.lattice,
          "--solution", str(sol), *map(str, files)],
@@ -40,7 +43,9 @@ def _run_checker(script, dissection, sol, files):
     return last
 
 
-def check_with_verify_py(dissection, files, tmp_path):
+def check_with_verify_py(
+    dissection: dissect.Dissection, files: Sequence[Path], tmp_path: Path
+) -> str:
     """Checks the dissection's JSON with tools/check_solution.py and, when it
     is present, the external verify.py (otherwise says once that it skipped
     it); returns the last line."""
@@ -56,8 +61,21 @@ def check_with_verify_py(dissection, files, tmp_path):
     return last
 
 
+def check_independently(dissection: dissect.Dissection, tmp_path: Path) -> None:
+    """`dissect.verify` and the independent checkers, the figures written
+    from their text (figures made from text keep their coordinates)."""
+    assert dissect.verify(dissection.figures, dissection) == dissection.piece_count
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    files = []
+    for f, name in zip(dissection.figures, dissection.names):
+        p = tmp_path / name
+        p.write_text(f.to_text())
+        files.append(p)
+    check_with_verify_py(dissection, files, tmp_path)
+
+
 @pytest.fixture(scope="session")
-def dissect_bin():
+def dissect_bin() -> Path:
     """The CLI binary: $DISSECT_BIN, or target/release/dissect of this checkout."""
     target = Path(os.environ.get("CARGO_TARGET_DIR", REPO / "target"))
     path = Path(os.environ.get("DISSECT_BIN", target / "release" / "dissect"))

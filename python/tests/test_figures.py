@@ -1,4 +1,6 @@
 import pickle
+from pathlib import Path
+from typing import Callable, List
 
 import numpy as np
 import pytest
@@ -7,7 +9,7 @@ import dissect
 from dissect import Figure
 
 
-def test_from_text_square():
+def test_from_text_square() -> None:
     f = Figure.from_text("###\n#.#\n")
     assert f.lattice == "square"
     assert f.area == 5 == len(f)
@@ -15,7 +17,7 @@ def test_from_text_square():
     assert f.to_text() == "###\n#.#\n"
 
 
-def test_from_text_tri4_and_cubic():
+def test_from_text_tri4_and_cubic() -> None:
     t = Figure.from_text("C3\n", lattice="tri4")
     assert t.area == 4
     assert sorted(t.cells) == [(0, 0, 2), (0, 0, 3), (1, 0, 0), (1, 0, 1)]
@@ -24,7 +26,7 @@ def test_from_text_tri4_and_cubic():
     assert sorted(c.cells) == [(0, 0, 0), (0, 0, 1), (1, 0, 0)]
 
 
-def test_from_array_2d_and_3d_match_text():
+def test_from_array_2d_and_3d_match_text() -> None:
     a = np.array([[1, 1, 1], [1, 0, 1]], dtype=bool)
     assert Figure.from_array(a) == Figure.from_text("###\n#.#\n")
     cube = np.zeros((2, 1, 2), dtype=bool)  # [z, y, x]
@@ -39,7 +41,7 @@ def test_from_array_2d_and_3d_match_text():
     assert Figure.from_array([[1, 0], [1, 1]]).area == 3
 
 
-def test_from_cells_and_pickle():
+def test_from_cells_and_pickle() -> None:
     f = Figure.from_cells([(0, 0), (1, 0)], name="domino")
     assert f.name == "domino" and f.area == 2
     g = pickle.loads(pickle.dumps(f))
@@ -47,7 +49,7 @@ def test_from_cells_and_pickle():
     assert hash(g) == hash(f)
 
 
-def test_read_figure(tmp_path):
+def test_read_figure(tmp_path: Path) -> None:
     p = tmp_path / "l.txt"
     p.write_text("#.\n##\n")
     f = dissect.read_figure(p)
@@ -69,7 +71,9 @@ def test_read_figure(tmp_path):
         (lambda: Figure.from_cells([(0,)]), ["not a cell"]),
     ],
 )
-def test_bad_figures_raise_figure_error_naming_the_problem(make, words):
+def test_bad_figures_raise_figure_error_naming_the_problem(
+    make: Callable[[], object], words: List[str]
+) -> None:
     with pytest.raises(dissect.FigureError) as e:
         make()
     assert isinstance(e.value, ValueError)

@@ -5,6 +5,7 @@ import signal
 import subprocess
 import sys
 import time
+from typing import Tuple
 
 SCRIPT = r"""
 import sys, dissect
@@ -33,9 +34,10 @@ print("result", d.piece_count, d.stopped, d.interrupted, flush=True)
 """
 
 
-def run_and_interrupt(mode, wait=1.5):
+def run_and_interrupt(mode: str, wait: float = 1.5) -> Tuple[int, str, str, float]:
     p = subprocess.Popen([sys.executable, "-c", SCRIPT, mode], stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
+    assert p.stdout is not None
     assert p.stdout.readline().strip() == "started"
     time.sleep(wait)
     assert p.poll() is None, "the search ended before it was interrupted"
@@ -45,14 +47,14 @@ def run_and_interrupt(mode, wait=1.5):
     return p.returncode, out, err, time.monotonic() - sent
 
 
-def test_ctrl_c_returns_the_best_found():
+def test_ctrl_c_returns_the_best_found() -> None:
     code, out, err, took = run_and_interrupt("found")
     assert code == 0, err
     assert out.strip().splitlines()[-1] == "result 2 True True"
     assert took < 10
 
 
-def test_ctrl_c_with_nothing_found_raises_keyboard_interrupt():
+def test_ctrl_c_with_nothing_found_raises_keyboard_interrupt() -> None:
     code, out, err, took = run_and_interrupt("none")
     assert code == 3, (out, err)
     assert "KeyboardInterrupt" in out

@@ -2,6 +2,8 @@
 local ones. Skipped without Ray unless DISSECT_REQUIRE_RAY=1 (CI sets it)."""
 
 import os
+from pathlib import Path
+from typing import Any, Dict, Iterator, List, Tuple
 
 import pytest
 
@@ -16,13 +18,13 @@ from conftest import instance
 
 
 @pytest.fixture(scope="module")
-def cluster():
+def cluster() -> Iterator[None]:
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
     yield
     ray.shutdown()
 
 
-def problems():
+def problems() -> List[Any]:
     return [
         instance("squares-3-4-split-to-5", "square")[0],
         {"figures": instance("squares-3-4-split-to-5", "square")[0], "seed": 2},
@@ -31,7 +33,7 @@ def problems():
     ]
 
 
-def test_solve_many_matches_local_answers_in_order(cluster):
+def test_solve_many_matches_local_answers_in_order(cluster: None) -> None:
     import dissect.ray as dray
 
     remote = dray.solve_many(problems(), explorations=100)
@@ -39,11 +41,12 @@ def test_solve_many_matches_local_answers_in_order(cluster):
     for p, r in zip(problems(), remote):
         figures, opts = (p["figures"], {"seed": p["seed"]}) if isinstance(p, dict) else (p, {})
         local = dissect.solve(figures, explorations=100, **opts)
+        assert isinstance(r, dissect.Dissection)
         assert r.pieces == local.pieces
         assert r.verify()
 
 
-def test_solve_many_failures(cluster):
+def test_solve_many_failures(cluster: None) -> None:
     import dissect.ray as dray
 
     figures = instance("squares-3-4-split-to-5", "square")[0]
@@ -61,11 +64,13 @@ def test_solve_many_failures(cluster):
         ("squares-3-4-split-to-5", "square", {"seed": 1}),
         ("squares-3-4-split-to-5", "square", {"seed": 2, "explorations": 60, "patience": 5}),
         ("squares-3-4-split-to-5", "square", {"seed": 1, "paper": True, "prove": False}),
-        ("tri-triangle8-to-rect4x8", "tri4", {"seed": 1}),
+        ("tri-triangle8-to-rect4x8", "tri4", {"seed": 1, "paper": True, "prove": False}),
         ("cube4-cavity-to-7x4x2", "cubic", {"seed": 3, "explorations": 100}),
     ],
 )
-def test_distributed_search_gives_the_local_answer(cluster, name, lattice, options, tmp_path):
+def test_distributed_search_gives_the_local_answer(
+    cluster: None, name: str, lattice: str, options: Dict[str, Any], tmp_path: Path
+) -> None:
     import dissect.ray as dray
 
     from conftest import check_with_verify_py
@@ -74,6 +79,17 @@ def test_distributed_search_gives_the_local_answer(cluster, name, lattice, optio
     local = dissect.solve(figures, **options)
     spread = dray.solve(figures, tasks=2, **options)
     assert spread.pieces == local.pieces
+    # Ray did the explorations: every batch went out as Ray tasks, run by
+    # worker processes, never by this one.
+    assert local.ray_batches is None
+    batches = spread.ray_batches
+    assert batches, "no batch was sent to Ray"
+    assert spread.ray_tasks == 2
+    assert sum(b.explorations for b in batches) > 0
+    for b in batches:
+        assert 1 <= b.tasks <= 2 and b.tasks <= b.explorations
+        assert b.workers and os.getpid() not in b.workers
+    assert {(b.round, b.level) for b in batches}
     assert spread.history and [(h["pieces"], h["by"]) for h in spread.history] == [
         (h["pieces"], h["by"]) for h in local.history
     ]
@@ -82,7 +98,7 @@ def test_distributed_search_gives_the_local_answer(cluster, name, lattice, optio
     check_with_verify_py(spread, files, tmp_path)
 
 
-def test_distributed_search_errors(cluster):
+def test_distributed_search_errors(cluster: None) -> None:
     import dissect.ray as dray
 
     figures = instance("squares-3-4-split-to-5", "square")[0]
@@ -92,3 +108,21 @@ def test_distributed_search_errors(cluster):
         dray.solve(figures, tasks=0)
     with pytest.raises(dissect.NoDissectionFound):
         dray.solve(figures, max_pieces=2, explorations=8)
+
+
+def test_distributed_search_with_puzzle_options_and_progress(cluster: None, tmp_path: Path) -> None:
+    import dissect.ray as dray
+
+    from conftest import check_independently
+
+    figures, _ = instance("squares-3-4-split-to-5", "square")
+    calls: List[Tuple[int, float, str]] = []
+    d = dray.solve(
+        figures, tasks=2, solutions=2, min_piece=2, time_limit=20,
+        progress=lambda p, s, by: calls.append((p, s, by)),
+    )
+    assert d.ray_batches and all(os.getpid() not in b.workers for b in d.ray_batches)
+    assert [(p, by) for p, _, by in calls] == [(h["pieces"], h["by"]) for h in d.history]
+    assert all(a >= 2 for s in d.solutions for a in s.areas)
+    for k, s in enumerate(d.solutions):
+        check_independently(s, tmp_path / str(k))

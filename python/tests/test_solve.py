@@ -1,5 +1,7 @@
 import json
 import subprocess
+from pathlib import Path
+from typing import Any, Callable, Dict, List, Type
 
 import numpy as np
 import pytest
@@ -17,7 +19,9 @@ CASES = [
 
 
 @pytest.mark.parametrize("name, lattice, pieces", CASES)
-def test_solve_shared_instances_checked_by_verify_py(name, lattice, pieces, tmp_path):
+def test_solve_shared_instances_checked_by_verify_py(
+    name: str, lattice: str, pieces: int, tmp_path: Path
+) -> None:
     figures, files = instance(name, lattice)
     d = dissect.solve(figures, seed=1)
     assert d.lattice == lattice
@@ -36,7 +40,7 @@ def test_solve_shared_instances_checked_by_verify_py(name, lattice, pieces, tmp_
     assert sol["pieces"] == pieces and sol["seed"] == 1
 
 
-def test_solve_from_arrays_and_thread_count_does_not_matter():
+def test_solve_from_arrays_and_thread_count_does_not_matter() -> None:
     a = Figure.from_array(np.ones((3, 4), bool))
     b = Figure.from_array(np.ones((2, 6), bool))
     one = dissect.solve([a, b], seed=5, threads=1)
@@ -54,7 +58,9 @@ def test_solve_from_arrays_and_thread_count_does_not_matter():
          {"seed": 2, "explorations": 40, "patience": 5, "mirror": False}),
     ],
 )
-def test_same_answer_as_the_cli_for_the_same_seed(dissect_bin, tmp_path, args, options):
+def test_same_answer_as_the_cli_for_the_same_seed(
+    dissect_bin: Path, tmp_path: Path, args: List[str], options: Dict[str, Any]
+) -> None:
     figures, files = instance("squares-3-4-split-to-5", "square")
     out = tmp_path / "cli.json"
     r = subprocess.run(
@@ -69,7 +75,7 @@ def test_same_answer_as_the_cli_for_the_same_seed(dissect_bin, tmp_path, args, o
     assert py["pieces"] == cli["pieces"]
 
 
-def test_verify_rejects_a_bad_solution(tmp_path):
+def test_verify_rejects_a_bad_solution(tmp_path: Path) -> None:
     figures, _ = instance("squares-3-4-split-to-5", "square")
     d = dissect.solve(figures, seed=1)
     sol = d.to_dict()
@@ -87,7 +93,7 @@ def test_verify_rejects_a_bad_solution(tmp_path):
     assert "line 1" in str(e.value)
 
 
-def test_bound():
+def test_bound() -> None:
     figures, _ = instance("squares-3-4-split-to-5", "square")
     b = dissect.bound(figures, max_pieces=3, time_limit=60)
     assert b.value == 4 and int(b) == 4
@@ -95,14 +101,14 @@ def test_bound():
     assert not b.stopped and b.dissection is None
 
 
-def test_no_dissection_found_within_max_pieces():
+def test_no_dissection_found_within_max_pieces() -> None:
     figures, _ = instance("squares-3-4-split-to-5", "square")
     with pytest.raises(dissect.NoDissectionFound) as e:
         dissect.solve(figures, max_pieces=2, explorations=20)
     assert "max_pieces=2" in str(e.value)
 
 
-def test_time_limit_zero_stops_at_once():
+def test_time_limit_zero_stops_at_once() -> None:
     figures, _ = instance("squares-6-6-7-split-to-11", "square")
     with pytest.raises(dissect.NoDissectionFound) as e:
         dissect.solve(figures, time_limit=0)
@@ -121,17 +127,21 @@ C = Figure.from_text("#####\n")
         (lambda: dissect.solve([A]), dissect.ProblemError, ["at least two figures, got 1"]),
         (lambda: dissect.solve([A, Figure.from_text("######", lattice="tri4")]), dissect.ProblemError,
          ["different lattices", "square", "tri4"]),
-        (lambda: dissect.solve([A, "######"]), dissect.ProblemError, ["figure 2 is a str"]),
-        (lambda: dissect.solve(A), dissect.ProblemError, ["list"]),
+        (lambda: dissect.solve([A, "######"]), dissect.ProblemError,  # type: ignore[list-item]
+         ["figure 2 is a str"]),
+        (lambda: dissect.solve(A), dissect.ProblemError, ["list"]),  # type: ignore[arg-type]
         (lambda: dissect.solve([A, B], explorashuns=3), dissect.OptionError, ["unknown option", "explorashuns"]),
         (lambda: dissect.solve([A, B], explorations=-1), dissect.OptionError, ["explorations", "-1"]),
         (lambda: dissect.solve([A, B], area_weight=float("nan")), dissect.OptionError, ["area_weight"]),
         (lambda: dissect.solve([A, B], time_limit=-2), dissect.OptionError, ["time_limit", "-2"]),
         (lambda: dissect.solve([A, B], threads=1000), dissect.OptionError, ["threads=1000"]),
-        (lambda: dissect.solve([A, B], mirror="yes"), dissect.OptionError, ["mirror", "True or False"]),
+        (lambda: dissect.solve([A, B], mirror="yes"), dissect.OptionError,  # type: ignore[arg-type]
+         ["mirror", "True or False"]),
     ],
 )
-def test_errors_are_exceptions_naming_the_problem(call, cls, words):
+def test_errors_are_exceptions_naming_the_problem(
+    call: Callable[[], object], cls: Type[Exception], words: List[str]
+) -> None:
     with pytest.raises(cls) as e:
         call()
     assert isinstance(e.value, dissect.DissectError)

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use dissect_core::solver::{Found, Options};
 use dissect_core::Figure;
-use dissect_engine::{EngineObserver, RunConfig, RunOptions, Strategy};
+use dissect_engine::{EngineObserver, RunConfig, RunOptions, Strategy, TimeLimit};
 
 use crate::schedule::{Recorder, Recording};
 
@@ -123,7 +123,7 @@ pub fn run_mode(
         mirror: options.mirror,
         seed: options.seed,
         threads: options.threads,
-        time_limit: time_limit.map(|d| d.as_secs_f64()),
+        time_limit: time_limit.map_or(TimeLimit::NONE, TimeLimit::from_duration),
         max_pieces: options.max_pieces,
         area_weight: options.area_weight,
         explorations: options.explorations,

@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 use dissect_core::LatticeKind;
+use dissect_engine::TimeLimit;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -40,17 +41,17 @@ pub enum Command {
     Voxelize(crate::render::VoxelizeArgs),
     /// Count the ways a solution's pieces tile each figure (and say when it is unique).
     Assemblies(crate::assemblies::AssembliesArgs),
+    /// Take each 3D figure of a solution apart by straight moves: the plan and its level, or the locked pieces.
+    Disassemble(crate::disassemble::DisassembleArgs),
+    /// Count every dissection with the fewest pieces (or --pieces K), complete, up to the first figure's symmetries.
+    Enumerate(crate::enumerate::EnumerateArgs),
 }
 
-/// A thread count from 0 (one per core) to 256.
+/// A thread count from 0 (one per core) to the engine's
+/// [`dissect_engine::MAX_THREADS`] ([`dissect_engine::check_threads`]).
 pub fn thread_count(s: &str) -> Result<usize, String> {
     let n = whole_usize::<0>(s)?;
-    if n > 256 {
-        return Err(format!(
-            "{n} threads is too many (at most 256; 0 means one per core)"
-        ));
-    }
-    Ok(n)
+    dissect_engine::check_threads(n).map_err(|e| e.to_string())
 }
 
 /// A whole number of at least `MIN`. Negative numbers reach this parser
@@ -128,7 +129,7 @@ pub struct SolveArgs {
     pub threads: usize,
     /// Stop after this many seconds and report the best dissection found so far.
     #[arg(long, value_name = "SECS")]
-    pub time_limit: Option<f64>,
+    pub time_limit: Option<TimeLimit>,
     /// Give up after trying this many pieces.
     #[arg(long, value_name = "K", value_parser = whole_usize::<0>)]
     pub max_pieces: Option<usize>,
@@ -178,7 +179,7 @@ pub struct SolveArgs {
     /// Write up to N different dissections with the fewest pieces: OUT.json (the best), OUT-2.json, ...
     #[arg(long, default_value_t = defaults().solutions, value_name = "N", value_parser = whole_usize::<0>)]
     pub solutions: usize,
-    /// How several solutions are ranked: variance (default), smallest, shapes, symmetry, unique.
+    /// How several solutions are ranked: variance (default), smallest, shapes, symmetry, unique, level.
     #[arg(long, value_name = "CRITERION", value_parser = rank)]
     pub rank: Option<dissect_engine::Rank>,
     /// Every piece has at least C cells.
@@ -187,6 +188,12 @@ pub struct SolveArgs {
     /// Every piece has at most C cells.
     #[arg(long, value_name = "C", value_parser = whole_usize::<0>)]
     pub max_piece: Option<usize>,
+    /// Accept only dissections whose every 3D figure comes apart by straight moves (dissect disassemble).
+    #[arg(long)]
+    pub assemblable: bool,
+    /// Every figure needs at least L moves before its first piece comes free (interlocking; implies --assemblable).
+    #[arg(long, value_name = "L", value_parser = whole_usize::<0>)]
+    pub min_level: Option<usize>,
     /// Every piece keeps the colour of each of its cells in a checkerboard colouring (square, cubic).
     #[arg(long)]
     pub checkerboard: bool,
@@ -289,7 +296,7 @@ impl SolveArgs {
             mirror: !self.no_mirror,
             seed: self.seed,
             threads: self.threads,
-            time_limit: self.time_limit,
+            time_limit: self.time_limit.unwrap_or_default(),
             max_pieces: self.max_pieces,
             area_weight: self.area_weight,
             explorations: self.explorations,

@@ -1,21 +1,20 @@
 //! `dissect assemblies`: in how many ways the pieces of a solution tile
-//! each figure (crate `dissect-puzzle`).
+//! each figure (the engine's [`dissect_engine::assemblies`]).
 
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use anyhow::Result;
 use clap::Args;
 use dissect_core::LatticeKind;
-use dissect_puzzle::assemblies::{count, report_line, AssemblyError, CountLimits, PieceSet};
-use dissect_puzzle::dlx::Progress;
-use dissect_puzzle::Motions;
+use dissect_engine::{AssemblyError, AssemblyEvent, TimeLimit};
+use dissect_puzzle::assemblies::report_line;
 
 use crate::{input, InputError, Status};
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct AssembliesArgs {
     /// The lattice (default: the solution's).
     #[arg(long)]
@@ -25,7 +24,7 @@ pub struct AssembliesArgs {
     pub solution: PathBuf,
     /// Stop counting after this many seconds in all and report what was found.
     #[arg(long, value_name = "SECS")]
-    pub time_limit: Option<f64>,
+    pub time_limit: Option<TimeLimit>,
     /// No progress on stderr.
     #[arg(long, short)]
     pub quiet: bool,
@@ -34,41 +33,22 @@ pub struct AssembliesArgs {
     pub figures: Vec<PathBuf>,
 }
 
-static STOP: AtomicBool = AtomicBool::new(false);
-
 pub fn run(args: AssembliesArgs) -> Result<Status> {
     let (_, dissection) = input::solution(&args.solution)?;
     input::check_solution_lattice(&args.solution, dissection.lattice(), args.lattice)?;
-    let lattice = dissection.lattice();
-    let deadline = match args.time_limit {
-        Some(t) if !(t.is_finite() && t > 0.0) => {
-            return Err(InputError(format!(
-                "--time-limit must be a number of seconds > 0, not {t}"
-            ))
-            .into())
-        }
-        Some(t) => Some(Instant::now() + Duration::from_secs_f64(t.min(1e9))),
-        None => None,
-    };
-    let figures = input::figures(&args.figures, lattice)?;
-    let pieces = dissection.pieces().first().cloned().unwrap_or_default();
-    let set = PieceSet::new(Motions::new(lattice, dissection.mirror()), &pieces)
-        .map_err(|e| InputError(format!("{}: {e}", args.solution.display())))?;
-    let _ = ctrlc::set_handler(|| STOP.store(true, Ordering::SeqCst));
+    let figures = input::figures(&args.figures, dissection.lattice())?;
+    let names: Vec<String> = args.figures.iter().map(|p| input::file_name(p)).collect();
     let terminal = std::io::stderr().is_terminal();
-    let mut complete = true;
-    for (path, figure) in args.figures.iter().zip(&figures) {
-        let name = input::file_name(path);
-        let mut last_line = Instant::now();
-        let mut shown = false;
-        let mut progress = |p: Progress| {
-            if args.quiet {
-                return;
-            }
+    let mut last_line = Instant::now();
+    let mut shown = false;
+    let mut written: std::io::Result<()> = Ok(());
+    let mut on_event = |event: AssemblyEvent<'_>| match event {
+        AssemblyEvent::Progress { figure, progress } if !args.quiet => {
             let text = format!(
-                "{name}: {} tilings so far, about {:.0}% searched",
-                p.solutions,
-                100.0 * p.done
+                "{}: {} tilings so far, about {:.0}% searched",
+                names[figure],
+                progress.solutions,
+                100.0 * progress.done
             );
             if terminal {
                 eprint!("\r\x1b[2K{text}");
@@ -77,32 +57,40 @@ pub fn run(args: AssembliesArgs) -> Result<Status> {
                 eprintln!("{text}");
                 last_line = Instant::now();
             }
-        };
-        let result = count(
-            &set,
-            figure,
-            CountLimits {
-                stop: Some(&STOP),
-                deadline,
-                progress: Some(&mut progress),
-            },
-        );
-        if shown {
-            eprint!("\r\x1b[2K");
         }
-        let c = result.map_err(|e| match e {
-            AssemblyError::Area { .. } | AssemblyError::Lattice { .. } => {
-                anyhow::Error::from(InputError(format!("{}: {e}", path.display())))
+        AssemblyEvent::Counted { figure, count } => {
+            if shown {
+                eprint!("\r\x1b[2K");
+                shown = false;
             }
-            other => other.into(),
-        })?;
-        complete &= c.complete;
-        let mut out = std::io::stdout().lock();
-        writeln!(out, "{}", report_line(&name, &c))?;
-        out.flush()?;
+            let mut out = std::io::stdout().lock();
+            if written.is_ok() {
+                written = writeln!(out, "{}", report_line(&names[figure], count))
+                    .and_then(|()| out.flush());
+            }
+        }
+        _ => {}
+    };
+    let counts = dissect_engine::assemblies(
+        &dissection,
+        &figures,
+        args.time_limit.unwrap_or_default(),
+        crate::stop::flag(),
+        &mut on_event,
+    );
+    if shown {
+        eprint!("\r\x1b[2K");
     }
+    let counts = counts.map_err(|e| match (e.figure, &e.error) {
+        (None, _) => anyhow::Error::from(InputError(format!("{}: {e}", args.solution.display()))),
+        (Some(i), AssemblyError::Area { .. } | AssemblyError::Lattice { .. }) => {
+            anyhow::Error::from(InputError(format!("{}: {e}", args.figures[i].display())))
+        }
+        (Some(_), _) => e.error.clone().into(),
+    })?;
+    written?;
     // A count cut short is still a result: say so, but do not fail.
-    if !complete && !args.quiet {
+    if counts.iter().any(|c| !c.complete) && !args.quiet {
         eprintln!(
             "note: the count stopped early (time limit or Ctrl-C); the numbers are lower bounds"
         );

@@ -2,6 +2,8 @@
 
 mod args;
 mod assemblies;
+mod disassemble;
+mod enumerate;
 mod info;
 mod input;
 mod output;
@@ -12,6 +14,7 @@ mod render;
 #[cfg(feature = "serve")]
 mod serve;
 mod solve;
+mod stop;
 mod verify;
 
 use std::process::ExitCode;
@@ -52,6 +55,8 @@ fn main() -> ExitCode {
         #[cfg(feature = "render")]
         args::Command::Voxelize(a) => render::voxelize(a),
         args::Command::Assemblies(a) => assemblies::run(a),
+        args::Command::Disassemble(a) => disassemble::run(a),
+        args::Command::Enumerate(a) => enumerate::run(a),
     };
     match result {
         Ok(Status::Ok) => ExitCode::SUCCESS,

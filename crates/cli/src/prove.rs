@@ -1,18 +1,15 @@
-//! `dissect bound`: the exact mode of the `dissect-exact` crate, and the
+//! `dissect bound`: the engine's bound ([`dissect_engine::bound`]), and the
 //! lines that show the exact search's progress on stderr.
 
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use anyhow::Result;
 use dissect_core::LatticeKind;
-use dissect_exact::{search, ExactEvent, ExactObserver, ExactOptions, Mode};
+use dissect_engine::{BoundConfig, EngineError, EngineEvent, EngineObserver, TimeLimit};
+use dissect_exact::{ExactEvent, ExactObserver};
 
 use crate::{input, InputError, Status};
-
-/// Raised by Ctrl-C.
-static STOP: AtomicBool = AtomicBool::new(false);
 
 #[derive(clap::Args, Debug)]
 #[command(allow_negative_numbers = true)]
@@ -25,7 +22,7 @@ pub struct BoundArgs {
     pub no_mirror: bool,
     /// Stop after this many seconds and report the best bound proved so far.
     #[arg(long, value_name = "SECS")]
-    pub time_limit: Option<f64>,
+    pub time_limit: Option<TimeLimit>,
     /// Try to refute no more than this many pieces.
     #[arg(long, value_name = "K", value_parser = crate::args::whole_usize::<1>)]
     pub max_pieces: Option<usize>,
@@ -105,29 +102,6 @@ impl ExactObserver for Lines {
     }
 }
 
-fn check_time_limit(t: Option<f64>) -> Result<Option<Instant>> {
-    match t {
-        None => Ok(None),
-        Some(t) if t.is_finite() && t >= 0.0 => {
-            Ok(Some(Instant::now() + Duration::from_secs_f64(t)))
-        }
-        Some(t) => Err(InputError(format!(
-            "--time-limit must be a number of seconds >= 0, got {t}"
-        ))
-        .into()),
-    }
-}
-
-fn catch_ctrl_c() {
-    // The first Ctrl-C stops the search (what is proved is kept), a second
-    // one exits at once.
-    let _ = ctrlc::set_handler(|| {
-        if STOP.swap(true, Ordering::SeqCst) {
-            std::process::exit(130);
-        }
-    });
-}
-
 pub fn names(paths: &[PathBuf]) -> Vec<String> {
     paths.iter().map(|p| input::file_name(p)).collect()
 }
@@ -148,43 +122,50 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         );
         return Ok(Status::Ok);
     }
-    let deadline = check_time_limit(args.time_limit)?;
-    catch_ctrl_c();
-    let options = ExactOptions {
+    let config = BoundConfig {
         mirror: !args.no_mirror,
-        mode: Mode::LowerBound,
-        deadline,
         max_pieces: args.max_pieces,
-        ..ExactOptions::default()
+        time_limit: args.time_limit.unwrap_or_default(),
     };
+    let names = names(&args.figures);
     let observer = Lines {
         quiet: args.quiet,
         start: Instant::now(),
-        names: names(&args.figures),
+        names: names.clone(),
     };
-    let upper = AtomicUsize::new(usize::MAX);
-    let outcome = search(&figures, &options, &STOP, &upper, &observer)
-        .map_err(|e| InputError(e.to_string()))?;
-    let names = names(&args.figures);
-    if let Some(p) = &outcome.found {
+    let report = dissect_engine::bound(&figures, &names, &config, crate::stop::flag(), &observer)
+        .map_err(|e| match e {
+        e @ (EngineError::Figures(_) | EngineError::Exact(_)) => {
+            anyhow::Error::from(InputError(e.to_string()))
+        }
+        e => e.into(),
+    })?;
+    if let Some(found) = &report.found {
         println!(
             "a {}-piece dissection exists (found by SAT): the bound is optimal",
-            p[0].len()
+            found.piece_count()
         );
-    } else if let Some(dissect_exact::Limit::TooLarge { pieces, bytes }) = &outcome.limit {
+    } else if let Some((pieces, bytes, cap)) = report.too_large {
         println!(
             "stopped: the SAT encoding for {pieces} pieces would need about {} MiB \
              (over the cap of {} MiB); the bound below is the best proved",
             bytes >> 20,
-            options.max_encoding_bytes >> 20
+            cap >> 20
         );
-    } else if outcome.stopped {
+    } else if report.stopped() {
         println!("stopped (time limit or Ctrl-C); the bound below is the best proved");
     }
     println!(
         "lower bound: {} ({})",
-        outcome.lower_bound.value,
-        outcome.lower_bound.describe(&names)
+        report.lower_bound.value, report.lower_bound.reason
     );
     Ok(Status::Ok)
+}
+
+impl EngineObserver for Lines {
+    fn on_event(&self, event: &EngineEvent<'_>) {
+        if let EngineEvent::Exact(e) = event {
+            ExactObserver::on_event(self, e);
+        }
+    }
 }

@@ -3,7 +3,6 @@
 //! searches, the time limit, verification) is `dissect_engine::run`.
 
 use std::io::IsTerminal;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use anyhow::Result;
@@ -19,9 +18,6 @@ use dissect_exact::ExactObserver;
 use crate::args::{KeepArg, SolveArgs};
 use crate::progress::{self, Progress};
 use crate::{input, InputError, Status};
-
-/// Raised by Ctrl-C (SIGINT, or SIGTERM).
-static STOP: AtomicBool = AtomicBool::new(false);
 
 /// Progress on stderr: the level search's lines (or bar), each
 /// improvement, each rise of the lower bound, and with `--exact` or an
@@ -44,7 +40,7 @@ impl EngineObserver for Display {
             EngineEvent::Search(e) => dissect_core::solver::Observer::on_event(&self.progress, e),
             EngineEvent::Exact(e) => {
                 if let Some(lines) = &self.exact {
-                    lines.on_event(e);
+                    ExactObserver::on_event(lines, e);
                 }
             }
             EngineEvent::Improved(_) | EngineEvent::LowerBound(_) if self.paper => {}
@@ -91,11 +87,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
 
     // Ctrl-C: the first stops the search (the best result is kept), a
     // second one exits at once.
-    let _ = ctrlc::set_handler(|| {
-        if STOP.swap(true, Ordering::SeqCst) {
-            std::process::exit(130);
-        }
-    });
+    let stop = crate::stop::flag();
     let start = Instant::now();
     let explicit_prove = args.prove || args.exact;
     let display = Display {
@@ -109,7 +101,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
             names: names.clone(),
         }),
     };
-    let report = dissect_engine::run(&figures, &names, &options, &STOP, &display);
+    let report = dissect_engine::run(&figures, &names, &options, stop, &display);
     display.progress.finish();
     let report = match report {
         Ok(r) => r,
@@ -123,7 +115,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
         let why = match report.end {
             End::Interrupted => "interrupted (Ctrl-C)".to_string(),
             End::TimeLimit => format!(
-                "the time limit of {} s was reached",
+                "the time limit of {} was reached",
                 args.time_limit.unwrap_or_default()
             ),
             _ => match args.max_pieces {
@@ -231,6 +223,7 @@ fn constraints(args: &SolveArgs, figures: &[Figure]) -> Result<Constraints> {
     let mut c = Constraints::none()
         .with_sizes(args.min_piece, args.max_piece)
         .with_checkerboard(args.checkerboard)
+        .with_assembly(args.assemblable, args.min_level)
         .with_symmetry_weight(args.symmetry_weight.unwrap_or(0.0));
     for k in &args.keep {
         let KeepArg::Regions(n, path) = k else {

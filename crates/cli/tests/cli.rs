@@ -15,14 +15,20 @@ mod anytime;
 mod assemblies;
 #[path = "cli/bad_input.rs"]
 mod bad_input;
+#[path = "cli/disassemble.rs"]
+mod disassemble;
 #[path = "cli/display.rs"]
 mod display;
+#[path = "cli/enumerate.rs"]
+mod enumerate;
 #[path = "cli/exit_codes.rs"]
 mod exit_codes;
 #[path = "cli/hostile.rs"]
 mod hostile;
 #[path = "cli/info.rs"]
 mod info;
+#[path = "cli/limits.rs"]
+mod limits;
 #[path = "cli/output.rs"]
 mod output;
 #[path = "cli/reproducibility.rs"]

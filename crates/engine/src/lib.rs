@@ -1,6 +1,8 @@
 //! The engine of `dissect`: one run, the same for every front end (CLI, web
 //! studio, bench, Python).
 //!
+//! * [`TimeLimit`]: how long any operation may run, parsed once by one
+//!   rule for every front end; [`check_threads`]: the thread count's rule.
 //! * [`RunOptions`]: every solver setting, validated once
 //!   ([`RunOptions::new`] from a plain [`RunConfig`], [`OptionsError`]).
 //! * [`run`]: the time limit and the stop flag (the only deadline of the
@@ -9,9 +11,20 @@
 //!   side with shared bounds, ending as soon as the best dissection meets
 //!   the lower bound (`optimal`), the repair of near misses, and the
 //!   [`Report`].
+//! * [`bound()`]: the exact search's lower bound alone ([`BoundConfig`],
+//!   [`BoundReport`]), under the same time limit and stop flag.
+//! * [`assemblies()`]: the ways a dissection's pieces tile figures
+//!   ([`AssemblyEvent`], [`CountError`]), under the same time limit and
+//!   stop flag.
 //! * [`Verified`]: a dissection that passed [`dissect_core::verify`]; the
 //!   only kind of dissection a [`Report`] holds; [`Verified::assemblies`]
 //!   counts the ways its pieces tile each figure.
+//! * [`disassemble()`]: whether each figure of a dissection can be taken
+//!   apart by straight moves (the plan, its level), within a time limit
+//!   and a stop flag.
+//! * [`enumerate()`]: every dissection with K pieces (the minimum, proved,
+//!   unless K is given), each [`Verified`], in classes up to the first
+//!   figure's symmetries, with the time limit and the stop flag.
 //! * [`EngineObserver`]: live events (level progress, improvements, bounds).
 //! * Puzzle runs ([`RunConfig::solutions`], [`RunConfig::rank`],
 //!   [`RunConfig::constraints`]): every candidate of the heuristic is judged
@@ -25,14 +38,27 @@
 //! Architecture invariant: like the core, this crate does no I/O and never
 //! prints.
 
+mod assemblies;
+mod bound;
+mod disassemble;
+mod enumerate;
+mod limits;
+mod monitor;
 mod options;
 mod repair;
 mod report;
 mod run;
 mod verified;
 
+pub use assemblies::{assemblies, AssemblyEvent, CountError};
+pub use bound::{bound, BoundConfig, BoundReport};
+pub use disassemble::disassemble;
+pub use dissect_exact::{EnumerateEvent, EnumerateObserver};
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
+pub use dissect_puzzle::disassembly::{Disassembly, DisassemblyError, Plan as DisassemblyPlan};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
+pub use enumerate::{enumerate, EnumerateConfig, EnumeratedClass, EnumerationReport};
+pub use limits::{check_threads, LimitError, TimeLimit, MAX_THREADS};
 pub use options::{
     OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS,
     PLATEAU_IDLE_ROUNDS,

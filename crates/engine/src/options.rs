@@ -4,9 +4,11 @@
 
 use std::time::Duration;
 
-use dissect_core::solver::{Anytime, Options, MAX_THREADS};
+use dissect_core::solver::{Anytime, Options};
 use dissect_puzzle::constraints::ConstraintError;
 use dissect_puzzle::{Constraints, Rank};
+
+use crate::limits::{check_threads, LimitError, TimeLimit};
 
 /// The most explorations per level (bounds the memory a level holds).
 pub const MAX_EXPLORATIONS: usize = 1_000_000;
@@ -53,8 +55,9 @@ pub struct RunConfig {
     pub seed: u64,
     /// Heuristic worker threads (0: one per core).
     pub threads: usize,
-    /// Stop after this many seconds (`None`: the run ends by its work rule).
-    pub time_limit: Option<f64>,
+    /// How long the run may last ([`TimeLimit::NONE`]: it ends by its work
+    /// rule).
+    pub time_limit: TimeLimit,
     /// Never report more pieces than this.
     pub max_pieces: Option<usize>,
     /// `λ` at level 1.
@@ -100,7 +103,7 @@ impl Default for RunConfig {
             mirror: o.mirror,
             seed: o.seed,
             threads: o.threads,
-            time_limit: None,
+            time_limit: TimeLimit::NONE,
             max_pieces: None,
             area_weight: o.area_weight,
             explorations: o.explorations,
@@ -146,9 +149,9 @@ pub enum OptionsError {
         /// Whether it must also be >= 0.
         non_negative: bool,
     },
-    /// The time limit is negative or not a number.
-    #[error("--time-limit must be a number of seconds >= 0, got {0}")]
-    TimeLimit(f64),
+    /// The thread count is out of range ([`crate::check_threads`]).
+    #[error(transparent)]
+    Limit(#[from] LimitError),
     /// The constraints are malformed or cannot hold
     /// ([`ConstraintError::is_impossible`] tells which).
     #[error(transparent)]
@@ -159,13 +162,12 @@ pub enum OptionsError {
 ///
 /// # Validity
 /// Every count is in its range, `area_weight` is finite and >= 0,
-/// `split_penalty` is finite, the time limit is >= 0 (infinite: none),
-/// the constraints pass [`Constraints::validate_settings`] (what needs the
+/// `split_penalty` is finite, the thread count passes
+/// [`check_threads`], the constraints pass [`Constraints::validate_settings`] (what needs the
 /// figures is checked by [`crate::run`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct RunOptions {
     config: RunConfig,
-    time_limit: Option<Duration>,
 }
 
 fn count(name: &'static str, value: usize, min: usize, max: usize) -> Result<(), OptionsError> {
@@ -190,7 +192,7 @@ impl RunOptions {
         count("extra-rounds", config.extra_rounds, 0, MAX_COUNT)?;
         count("patience", config.patience, 0, MAX_COUNT)?;
         count("rounds", config.idle_rounds, 0, MAX_COUNT)?;
-        count("threads", config.threads, 0, MAX_THREADS)?;
+        check_threads(config.threads)?;
         count("solutions", config.solutions, 1, MAX_SOLUTIONS)?;
         config.constraints.validate_settings()?;
         if let Some(k) = config.max_pieces {
@@ -210,13 +212,7 @@ impl RunOptions {
                 non_negative: false,
             });
         }
-        let time_limit = match config.time_limit {
-            None => None,
-            Some(t) if t.is_nan() || t < 0.0 => return Err(OptionsError::TimeLimit(t)),
-            // A limit too far away to be a duration is no limit.
-            Some(t) => Duration::try_from_secs_f64(t).ok(),
-        };
-        Ok(RunOptions { config, time_limit })
+        Ok(RunOptions { config })
     }
 
     /// The settings as given.
@@ -226,7 +222,7 @@ impl RunOptions {
 
     /// The time limit (`None`: the run ends by its work rule).
     pub fn time_limit(&self) -> Option<Duration> {
-        self.time_limit
+        self.config.time_limit.duration()
     }
 
     /// The seed.
@@ -278,7 +274,7 @@ impl RunOptions {
     /// limit (or optimality) ends it.
     pub fn anytime(&self) -> Anytime {
         Anytime {
-            idle_rounds: match self.time_limit {
+            idle_rounds: match self.time_limit() {
                 // Several solutions: a round that found a new one is no
                 // idle round, and more idle rounds are allowed.
                 None if self.config.solutions > 1 => {

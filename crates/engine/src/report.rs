@@ -243,6 +243,9 @@ impl Report {
             "scores".into(),
             serde_json::to_value(&s.scores).unwrap_or(Value::Null),
         );
+        if let Some(levels) = &s.scores.levels {
+            extra.insert("levels".into(), json!(levels));
+        }
         if let Some(r) = &self.ranking {
             extra.insert(
                 "rank".into(),

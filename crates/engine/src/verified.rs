@@ -1,13 +1,14 @@
 //! A dissection that passed the independent verifier.
 
 use std::sync::atomic::AtomicBool;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use dissect_core::verify::verify;
 use dissect_core::Dissection;
 use dissect_core::{Cell, Figure, LatticeKind};
-use dissect_puzzle::assemblies::{count, AssemblyError, Count, CountLimits, PieceSet};
-use dissect_puzzle::Motions;
+use dissect_puzzle::assemblies::{AssemblyError, Count};
+
+use crate::limits::TimeLimit;
 
 /// A dissection checked by [`dissect_core::verify`] against its figures.
 ///
@@ -76,8 +77,8 @@ impl Verified {
     /// `dissect assemblies`: [`dissect_puzzle::assemblies::count`], every
     /// placement the lattice allows, mirror images as the dissection
     /// allows them, identical pieces interchangeable), one [`Count`] per
-    /// figure. Each count stops after `time` or when `stop` is raised; a
-    /// count cut short says so ([`Count::complete`]) and its numbers are
+    /// figure ([`crate::assemblies()`]). The counts stop after `time` in all
+    /// or when `stop` is raised; a count cut short says so ([`Count::complete`]) and its numbers are
     /// lower bounds.
     pub fn assemblies(
         &self,
@@ -85,22 +86,14 @@ impl Verified {
         time: Duration,
         stop: Option<&AtomicBool>,
     ) -> Result<Vec<Count>, AssemblyError> {
-        let d = &self.dissection;
-        let pieces = d.pieces().first().cloned().unwrap_or_default();
-        let set = PieceSet::new(Motions::new(d.lattice(), d.mirror()), &pieces)?;
-        figures
-            .iter()
-            .map(|f| {
-                count(
-                    &set,
-                    f,
-                    CountLimits {
-                        stop,
-                        deadline: Instant::now().checked_add(time),
-                        progress: None,
-                    },
-                )
-            })
-            .collect()
+        let never = AtomicBool::new(false);
+        crate::assemblies::assemblies(
+            &self.dissection,
+            figures,
+            TimeLimit::from_duration(time),
+            stop.unwrap_or(&never),
+            &mut |_| {},
+        )
+        .map_err(|e| e.error)
     }
 }

@@ -12,7 +12,7 @@ use dissect_core::verify::verify_pieces;
 use dissect_core::{Cell, Figure, LatticeKind};
 use dissect_engine::{
     run, End, EngineEvent, EngineObserver, ExactRepair, OptionsError, RunConfig, RunOptions,
-    Source, Strategy,
+    Source, Strategy, TimeLimit, MAX_THREADS,
 };
 use dissect_exact::RepairOptions;
 
@@ -82,32 +82,29 @@ fn every_option_rule_is_checked_once_with_a_typed_error() {
             },
             "--split-penalty",
         ),
-        (
-            RunConfig {
-                time_limit: Some(-1.0),
-                ..small()
-            },
-            "--time-limit",
-        ),
-        (
-            RunConfig {
-                time_limit: Some(f64::NAN),
-                ..small()
-            },
-            "--time-limit",
-        ),
     ];
     for (config, name) in bad {
         let e: OptionsError = RunOptions::new(config.clone()).expect_err(name);
         assert!(e.to_string().starts_with(name), "{name}: {e}");
     }
-    // An infinite limit is no limit; the defaults are valid.
+    // NaN and negative limits are refused (one rule: TimeLimit); an
+    // infinite limit is no limit; the defaults are valid.
+    for bad in [-1.0, f64::NAN] {
+        let e = TimeLimit::new(bad).expect_err("refused");
+        assert!(e.to_string().starts_with("--time-limit"), "{e}");
+    }
     let o = RunOptions::new(RunConfig {
-        time_limit: Some(f64::INFINITY),
+        time_limit: TimeLimit::new(f64::INFINITY).unwrap(),
         ..small()
     })
     .unwrap();
     assert_eq!(o.time_limit(), None);
+    let e = RunOptions::new(RunConfig {
+        threads: MAX_THREADS + 1,
+        ..small()
+    })
+    .expect_err("too many threads");
+    assert!(e.to_string().starts_with("--threads"), "{e}");
     RunOptions::new(RunConfig::default()).expect("defaults are valid");
 }
 
@@ -356,7 +353,7 @@ fn a_sliver_answer_is_polished_within_the_time_limit() {
     let names = vec!["a".to_string(), "b".to_string()];
     let options = RunOptions::new(RunConfig {
         prove: false,
-        time_limit: Some(8.0),
+        time_limit: TimeLimit::new(8.0).unwrap(),
         ..RunConfig::default()
     })
     .unwrap();

@@ -11,7 +11,7 @@ use dissect_core::verify::verify_pieces;
 use dissect_core::{Figure, LatticeKind};
 use dissect_engine::{
     run, Constraints, EngineError, KeepRegions, OptionsError, Rank, Report, RunConfig, RunOptions,
-    Strategy,
+    Strategy, TimeLimit,
 };
 use dissect_puzzle::scores::canonical;
 use dissect_puzzle::Motions;
@@ -69,7 +69,7 @@ fn several_solutions_are_different_have_the_fewest_pieces_and_are_ranked() {
             RunConfig {
                 solutions: 3,
                 rank,
-                time_limit: Some(30.0),
+                time_limit: TimeLimit::new(30.0).unwrap(),
                 ..config()
             },
         )

@@ -122,6 +122,18 @@ pub(crate) fn cheap(
     mirror: bool,
     interrupted: &dyn Fn() -> bool,
 ) -> Result<Cheap, ExactError> {
+    cheap_with(figures, mirror, interrupted, &|_| {})
+}
+
+/// [`cheap`], telling `early` the bound of the components and congruence
+/// as soon as it is known (before the incompatibility graphs, which take
+/// long on large figures and may be interrupted).
+pub(crate) fn cheap_with(
+    figures: &[Figure],
+    mirror: bool,
+    interrupted: &dyn Fn() -> bool,
+    early: &dyn Fn(&Bound),
+) -> Result<Cheap, ExactError> {
     dissect_core::solver::check_figures(figures)?;
     let inst = Instance::new(figures, mirror, 0);
     let mut bound = Bound {
@@ -143,6 +155,7 @@ pub(crate) fn cheap(
             reason: Reason::NotCongruent,
         };
     }
+    early(&bound);
     let mut clique_figure = 0;
     let mut clique = Vec::new();
     let mut graphs = Some(Vec::with_capacity(inst.shapes.len()));

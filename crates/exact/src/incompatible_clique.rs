@@ -38,7 +38,10 @@ impl Incompatibility {
         let words = n.div_ceil(64);
         let mut rows = vec![vec![0u64; words]; n];
         // Different components of the shape itself.
-        for (row, ca) in rows.iter_mut().zip(&s.component) {
+        for (a, (row, ca)) in rows.iter_mut().zip(&s.component).enumerate() {
+            if a.is_multiple_of(256) && interrupted() {
+                return None;
+            }
             for (b, cb) in s.component.iter().enumerate() {
                 if ca != cb {
                     row[b / 64] |= 1 << (b % 64);

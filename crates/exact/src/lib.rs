@@ -14,6 +14,10 @@
 //!   gets clauses that forbid the split, so a model that survives is a real
 //!   K-piece dissection (and is checked by `dissect_core::verify` before it
 //!   is reported).
+//! * [`enumerate::enumerate`] counts every dissection with K pieces (the
+//!   minimum, proved first, unless K is given): SAT again and again, each
+//!   model verified and then forbidden by a blocking clause over the cut of
+//!   the first figure; classes up to the first figure's symmetries.
 //! * [`search::search`] runs the loop over K, shares its bounds with a
 //!   caller (the heuristic solver running beside it) and stops on request.
 //!
@@ -26,6 +30,7 @@ pub mod bound;
 pub(crate) mod component_count;
 pub(crate) mod connectivity_cut;
 pub(crate) mod constraint_encoding;
+pub mod enumerate;
 pub(crate) mod incompatible_clique;
 pub(crate) mod instance;
 pub mod motion;
@@ -36,6 +41,7 @@ pub(crate) mod sat_backend;
 pub mod search;
 
 pub use bound::{cheap_bound, Bound, Reason};
+pub use enumerate::{enumerate, EnumerateEvent, EnumerateObserver, EnumerateOptions, Enumeration};
 pub use motion::MotionSet;
 pub use placement_encoding::EncodingSize;
 pub use repair::{repair, repair_report, RepairOptions, RepairReport};

@@ -164,9 +164,8 @@ pub(crate) fn encode(
     incompat: &[Incompatibility],
     interrupted: &dyn Fn() -> bool,
 ) -> Option<Encoding> {
-    let shapes = &inst.shapes;
-    let n = shapes[0].len();
-    let cell: Vec<Vec<Vec<i32>>> = shapes
+    let cell: Vec<Vec<Vec<i32>>> = inst
+        .shapes
         .iter()
         .map(|s| {
             (0..k)
@@ -174,8 +173,39 @@ pub(crate) fn encode(
                 .collect()
         })
         .collect();
-    // Exactly one piece per cell.
-    for per_piece in &cell {
+    one_piece_per_cell(sat, &cell, k, interrupted)?;
+    let mut anchor = order_pieces(inst, sat, &cell, k, clique);
+    no_cell_cut_off(inst, sat, &cell, k, interrupted)?;
+    incompatible_apart(inst, sat, &cell, incompat, interrupted)?;
+    let mut motion: Vec<Vec<Vec<(i32, Motion)>>> = vec![Vec::new()];
+    for f in 1..inst.shapes.len() {
+        motion.push(motions_of_shape(
+            inst,
+            sat,
+            &cell,
+            (f, set),
+            &anchor,
+            interrupted,
+        )?);
+    }
+    anchor.truncate(k);
+    Some(Encoding {
+        k,
+        anchors: anchor,
+        cell,
+        motion,
+    })
+}
+
+/// Exactly one piece per cell (`cell[f][i][c]`: cell `c` of shape `f` is
+/// in piece `i`). `None` when interrupted.
+fn one_piece_per_cell(
+    sat: &mut Sat<'_>,
+    cell: &[Vec<Vec<i32>>],
+    k: usize,
+    interrupted: &dyn Fn() -> bool,
+) -> Option<()> {
+    for per_piece in cell {
         if interrupted() {
             return None;
         }
@@ -192,9 +222,22 @@ pub(crate) fn encode(
             }
         }
     }
-    // Symmetry breaking on piece order.
+    Some(())
+}
+
+/// Symmetry breaking on piece order: the clique's cells in pieces
+/// `0..q`, the later pieces ordered by their first cell. Returns the
+/// anchors (the cell of shape 0 each first piece holds).
+fn order_pieces(
+    inst: &Instance,
+    sat: &mut Sat<'_>,
+    cell: &[Vec<Vec<i32>>],
+    k: usize,
+    clique: &[usize],
+) -> Vec<usize> {
+    let n = inst.shapes[0].len();
     let q = clique.len().min(k);
-    let mut anchor: Vec<usize> = if q > 0 { clique[..q].to_vec() } else { vec![0] };
+    let anchor: Vec<usize> = if q > 0 { clique[..q].to_vec() } else { vec![0] };
     for (i, &c) in clique.iter().take(q).enumerate() {
         sat.add(&[cell[0][i][c]]);
     }
@@ -215,9 +258,21 @@ pub(crate) fn encode(
             sat.add(&[-cell[0][i + 1][a], u[a - 1]]);
         }
     }
-    // No cell of a piece with two or more cells is cut off from the rest:
-    // `big[i]` holds when piece i has two cells (counted in shape 0), and
-    // then every cell of the piece has a neighbour in it, in every shape.
+    anchor
+}
+
+/// No cell of a piece with two or more cells is cut off from the rest:
+/// `big[i]` holds when piece i has two cells (counted in shape 0), and
+/// then every cell of the piece has a neighbour in it, in every shape.
+/// `None` when interrupted.
+fn no_cell_cut_off(
+    inst: &Instance,
+    sat: &mut Sat<'_>,
+    cell: &[Vec<Vec<i32>>],
+    k: usize,
+    interrupted: &dyn Fn() -> bool,
+) -> Option<()> {
+    let shapes = &inst.shapes;
     #[allow(clippy::needless_range_loop)] // piece i of every shape
     for i in 0..k {
         if interrupted() {
@@ -244,7 +299,18 @@ pub(crate) fn encode(
             }
         }
     }
-    // Incompatible cells never share a piece.
+    Some(())
+}
+
+/// Incompatible cells never share a piece. `None` when interrupted.
+fn incompatible_apart(
+    inst: &Instance,
+    sat: &mut Sat<'_>,
+    cell: &[Vec<Vec<i32>>],
+    incompat: &[Incompatibility],
+    interrupted: &dyn Fn() -> bool,
+) -> Option<()> {
+    let shapes = &inst.shapes;
     for (f, g) in incompat.iter().enumerate() {
         for a in 0..shapes[f].len() {
             if a.is_multiple_of(64) && interrupted() {
@@ -259,66 +325,70 @@ pub(crate) fn encode(
             }
         }
     }
-    // Motions.
-    let mut motion: Vec<Vec<Vec<(i32, Motion)>>> = vec![Vec::new()];
-    for f in 1..shapes.len() {
-        let all = motions_into(inst, f, set, interrupted)?;
-        let group: Vec<usize> = self_symmetries(inst, f)
-            .into_iter()
-            .filter(|&h| set.admits(h, inst.syms[h].determinant()))
-            .filter(|&h| inst.target_symmetries || h == 0)
+    Some(())
+}
+
+/// The motion variables of each piece into shape `f` (from `set`) and
+/// the clauses that tie a piece's cells in shape 0 to its cells in shape
+/// `f`. `None` when interrupted.
+fn motions_of_shape(
+    inst: &Instance,
+    sat: &mut Sat<'_>,
+    cell: &[Vec<Vec<i32>>],
+    (f, set): (usize, MotionSet),
+    anchor: &[usize],
+    interrupted: &dyn Fn() -> bool,
+) -> Option<Vec<Vec<(i32, Motion)>>> {
+    let shapes = &inst.shapes;
+    let all = motions_into(inst, f, set, interrupted)?;
+    let group: Vec<usize> = self_symmetries(inst, f)
+        .into_iter()
+        .filter(|&h| set.admits(h, inst.syms[h].determinant()))
+        .filter(|&h| inst.target_symmetries || h == 0)
+        .collect();
+    let reps = coset_representatives(inst, &group);
+    let target = &shapes[f];
+    let mut per_piece = Vec::with_capacity(cell[0].len());
+    for (i, (from, into)) in cell[0].iter().zip(&cell[f]).enumerate() {
+        let anchor_cell = anchor.get(i).copied();
+        let allowed: Vec<Motion> = all
+            .iter()
+            .filter(|m| i != 0 || reps[m.sym])
+            .filter(|m| match anchor_cell {
+                Some(c) => target
+                    .index
+                    .contains_key(&m.transform.apply(shapes[0].points[c])),
+                None => true,
+            })
+            .copied()
             .collect();
-        let reps = coset_representatives(inst, &group);
-        let target = &shapes[f];
-        let mut per_piece = Vec::with_capacity(k);
-        for (i, (from, into)) in cell[0].iter().zip(&cell[f]).enumerate() {
-            let anchor_cell = anchor.get(i).copied();
-            let allowed: Vec<Motion> = all
-                .iter()
-                .filter(|m| i != 0 || reps[m.sym])
-                .filter(|m| match anchor_cell {
-                    Some(c) => target
-                        .index
-                        .contains_key(&m.transform.apply(shapes[0].points[c])),
-                    None => true,
-                })
-                .copied()
-                .collect();
-            let vars: Vec<(i32, Motion)> = allowed.into_iter().map(|m| (sat.var(), m)).collect();
-            let lits: Vec<i32> = vars.iter().map(|(v, _)| *v).collect();
-            sat.add(&lits);
-            for &(mv, m) in &vars {
-                if interrupted() {
-                    return None;
-                }
-                let t = m.transform;
-                for (a, p) in shapes[0].points.iter().enumerate() {
-                    let img = t.apply(*p);
-                    match target.index.get(&img) {
-                        Some(&b) => sat.add(&[-from[a], -mv, into[b]]),
-                        None => sat.add(&[-from[a], -mv]),
-                    }
-                }
-                let inv = t.inverse();
-                for (b, q) in target.points.iter().enumerate() {
-                    let pre = inv.apply(*q);
-                    match shapes[0].index.get(&pre) {
-                        Some(&a) => sat.add(&[-into[b], -mv, from[a]]),
-                        None => sat.add(&[-into[b], -mv]),
-                    }
+        let vars: Vec<(i32, Motion)> = allowed.into_iter().map(|m| (sat.var(), m)).collect();
+        let lits: Vec<i32> = vars.iter().map(|(v, _)| *v).collect();
+        sat.add(&lits);
+        for &(mv, m) in &vars {
+            if interrupted() {
+                return None;
+            }
+            let t = m.transform;
+            for (a, p) in shapes[0].points.iter().enumerate() {
+                let img = t.apply(*p);
+                match target.index.get(&img) {
+                    Some(&b) => sat.add(&[-from[a], -mv, into[b]]),
+                    None => sat.add(&[-from[a], -mv]),
                 }
             }
-            per_piece.push(vars);
+            let inv = t.inverse();
+            for (b, q) in target.points.iter().enumerate() {
+                let pre = inv.apply(*q);
+                match shapes[0].index.get(&pre) {
+                    Some(&a) => sat.add(&[-into[b], -mv, from[a]]),
+                    None => sat.add(&[-into[b], -mv]),
+                }
+            }
         }
-        motion.push(per_piece);
+        per_piece.push(vars);
     }
-    anchor.truncate(k);
-    Some(Encoding {
-        k,
-        anchors: anchor,
-        cell,
-        motion,
-    })
+    Some(per_piece)
 }
 
 impl Encoding {

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use dissect_core::{Cell, Figure};
 
-use crate::bound::{cheap, Bound, Cheap, Reason};
+use crate::bound::{cheap, cheap_with, Bound, Cheap, Reason};
 use crate::connectivity_cut::cuts;
 use crate::incompatible_clique::Incompatibility;
 use crate::instance::Instance;
@@ -107,7 +107,8 @@ impl Default for ExactOptions {
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum ExactEvent {
-    /// The bound from components and incompatible cells.
+    /// The bound from components and incompatible cells (first, when it
+    /// is above 1, the bound of components and congruence alone).
     CheapBound(Bound),
     /// A SAT model for `pieces` pieces was built.
     Encoded {
@@ -362,7 +363,14 @@ pub fn search(
     let start = Instant::now();
     let out_of_time = || options.deadline.is_some_and(|d| Instant::now() >= d);
     let interrupted = || stop.load(Ordering::Relaxed) || out_of_time();
-    let mut cheap = cheap(figures, options.mirror, &interrupted)?;
+    // The bound of components and congruence is announced at once, so
+    // that a caller that stops waiting for the slower bounds has it.
+    let early = |b: &Bound| {
+        if b.value > 1 {
+            observer.on_event(&ExactEvent::CheapBound(b.clone()));
+        }
+    };
+    let mut cheap = cheap_with(figures, options.mirror, &interrupted, &early)?;
     observer.on_event(&ExactEvent::CheapBound(cheap.bound.clone()));
     let mut outcome = ExactOutcome {
         lower_bound: cheap.bound.clone(),
@@ -509,7 +517,20 @@ fn model_inputs(
     mirror: bool,
     cheap: &mut Cheap,
 ) -> Option<(Instance, Vec<usize>, Vec<Incompatibility>)> {
-    let reference = if cheap.clique.len() >= 2 {
+    model_inputs_from(figures, mirror, cheap, false)
+}
+
+/// [`model_inputs`]; with `first` the reference shape is always input
+/// figure 0 (the clique is used only when it lies there).
+pub(crate) fn model_inputs_from(
+    figures: &[Figure],
+    mirror: bool,
+    cheap: &mut Cheap,
+    first: bool,
+) -> Option<(Instance, Vec<usize>, Vec<Incompatibility>)> {
+    let reference = if first {
+        0
+    } else if cheap.clique.len() >= 2 {
         cheap.clique_figure
     } else {
         0
@@ -612,7 +633,7 @@ pub fn dimacs_within(
 }
 
 /// Cell indices per shape to sorted cells per figure, in input order.
-fn to_cells(inst: &Instance, pieces: &[Vec<Vec<usize>>]) -> Vec<Vec<Vec<Cell>>> {
+pub(crate) fn to_cells(inst: &Instance, pieces: &[Vec<Vec<usize>>]) -> Vec<Vec<Vec<Cell>>> {
     let per_shape: Vec<Vec<Vec<Cell>>> = pieces
         .iter()
         .zip(&inst.shapes)

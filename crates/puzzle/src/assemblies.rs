@@ -11,10 +11,11 @@
 //! nothing but the current tiling is kept in memory.
 
 use std::collections::{HashMap, HashSet};
-use std::sync::atomic::AtomicBool;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use dissect_core::lattice::Point;
+use dissect_core::transform::Transform;
 use dissect_core::{Cell, Figure};
 
 use crate::dlx::{End, ExactCover, Limits, Progress};
@@ -149,7 +150,13 @@ struct Board {
     rows: Vec<(usize, Vec<Cell>)>,
 }
 
-fn board(pieces: &PieceSet, figure: &Figure) -> Result<Board, AssemblyError> {
+/// The board of `figure` (`Ok(None)` when `interrupted` says so: it is
+/// asked before each orientation of each shape).
+fn board(
+    pieces: &PieceSet,
+    figure: &Figure,
+    interrupted: &dyn Fn() -> bool,
+) -> Result<Option<Board>, AssemblyError> {
     let m = &pieces.motions;
     if figure.lattice() != m.lattice() {
         return Err(AssemblyError::Lattice {
@@ -176,7 +183,10 @@ fn board(pieces: &PieceSet, figure: &Figure) -> Result<Board, AssemblyError> {
     );
     let mut rows = Vec::new();
     for (s, (rep, _)) in pieces.shapes.iter().enumerate() {
-        for cells in m.placements(rep, &region) {
+        let Some(placements) = m.placements_until(rep, &region, interrupted) else {
+            return Ok(None);
+        };
+        for cells in placements {
             let items = cells.iter().map(|c| index[c]).collect();
             cover
                 .add_row(items, s)
@@ -184,44 +194,72 @@ fn board(pieces: &PieceSet, figure: &Figure) -> Result<Board, AssemblyError> {
             rows.push((s, cells));
         }
     }
-    Ok(Board { cover, rows })
+    Ok(Some(Board { cover, rows }))
 }
 
-/// Counts the tilings of `figure` by `pieces`, and the tilings up to the
-/// figure's symmetries.
-pub fn count(
-    pieces: &PieceSet,
-    figure: &Figure,
-    limits: CountLimits<'_>,
-) -> Result<Count, AssemblyError> {
-    let start = Instant::now();
-    let b = board(pieces, figure)?;
-    let m = &pieces.motions;
-    // The figure's symmetries as permutations of the rows.
+/// The figure's symmetries (but the identity) as permutations of the
+/// board's rows; `None` when `interrupted` says so (it is asked every
+/// 1024 rows).
+fn row_permutations(
+    m: &Motions,
+    b: &Board,
+    syms: &[Transform],
+    interrupted: &dyn Fn() -> bool,
+) -> Option<Vec<Vec<usize>>> {
     let row_of: HashMap<(usize, &[Cell]), usize> = b
         .rows
         .iter()
         .enumerate()
         .map(|(r, (s, c))| ((*s, c.as_slice()), r))
         .collect();
-    let syms = m.symmetries_of(figure.cells());
-    let perms: Vec<Vec<usize>> = syms
-        .iter()
-        .skip(1)
-        .map(|g| {
-            b.rows
+    let mut perms = Vec::with_capacity(syms.len().saturating_sub(1));
+    for g in syms.iter().skip(1) {
+        let mut perm = Vec::with_capacity(b.rows.len());
+        for (r, (s, cells)) in b.rows.iter().enumerate() {
+            if r.is_multiple_of(1024) && interrupted() {
+                return None;
+            }
+            let mut img: Vec<Cell> = cells
                 .iter()
-                .map(|(s, cells)| {
-                    let mut img: Vec<Cell> = cells
-                        .iter()
-                        .map(|c| m.move_cell(g, *c).expect("a symmetry maps cells to cells"))
-                        .collect();
-                    img.sort_unstable();
-                    row_of[&(*s, img.as_slice())]
-                })
-                .collect()
-        })
-        .collect();
+                .map(|c| m.move_cell(g, *c).expect("a symmetry maps cells to cells"))
+                .collect();
+            img.sort_unstable();
+            perm.push(row_of[&(*s, img.as_slice())]);
+        }
+        perms.push(perm);
+    }
+    Some(perms)
+}
+
+/// Counts the tilings of `figure` by `pieces`, and the tilings up to the
+/// figure's symmetries. The stop flag and the deadline of `limits` are
+/// looked at while the board is built and all through the search.
+pub fn count(
+    pieces: &PieceSet,
+    figure: &Figure,
+    limits: CountLimits<'_>,
+) -> Result<Count, AssemblyError> {
+    let start = Instant::now();
+    let interrupted = || {
+        limits.stop.is_some_and(|s| s.load(Ordering::Relaxed))
+            || limits.deadline.is_some_and(|d| Instant::now() >= d)
+    };
+    let cut_short = |figure_symmetries: usize| Count {
+        tilings: 0,
+        up_to_symmetry: 0,
+        figure_symmetries,
+        complete: false,
+        nodes: 0,
+        elapsed: start.elapsed(),
+    };
+    let m = &pieces.motions;
+    let syms = m.symmetries_of(figure.cells());
+    let Some(b) = board(pieces, figure, &interrupted)? else {
+        return Ok(cut_short(syms.len()));
+    };
+    let Some(perms) = row_permutations(m, &b, &syms, &interrupted) else {
+        return Ok(cut_short(syms.len()));
+    };
     let mut tilings = 0u64;
     let mut fixed_sum = 0u64;
     let mut a: Vec<usize> = Vec::new();

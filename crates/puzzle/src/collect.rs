@@ -10,7 +10,8 @@ use dissect_core::lattice::Point;
 use dissect_core::{Cell, Figure};
 
 use crate::assemblies::{count, CountLimits, PieceSet};
-use crate::constraints::{Constraints, Violation};
+use crate::constraints::{Constraints, Violation, CHECK_STATES};
+use crate::disassembly::{disassemble, Limits};
 use crate::geometry::Motions;
 use crate::scores::{canonical, Rank, Scores};
 
@@ -123,6 +124,11 @@ impl Collection {
                 e.scores.assemblies = assemblies(&self.motions, &e.pieces, figures, count_time);
             }
         }
+        if rank.needs_levels() || self.constraints.assemblable() {
+            for e in &mut self.entries {
+                e.scores.levels = Some(levels(&self.motions, &e.pieces));
+            }
+        }
         let mut items: Vec<(Scores, Entry)> = self
             .entries
             .into_iter()
@@ -131,6 +137,24 @@ impl Collection {
         rank.sort(&mut items);
         items.into_iter().take(limit).map(|(_, e)| e).collect()
     }
+}
+
+/// Each figure's disassembly level (`None`: it does not come apart within
+/// [`CHECK_STATES`] positions).
+pub fn levels(motions: &Motions, pieces: &[Vec<Vec<Cell>>]) -> Vec<Option<usize>> {
+    let limits = Limits {
+        max_states: CHECK_STATES,
+        ..Limits::default()
+    };
+    let lattice = motions.lattice().lattice();
+    pieces
+        .iter()
+        .map(|fig| {
+            disassemble(lattice, fig, limits)
+                .ok()
+                .and_then(|d| d.level())
+        })
+        .collect()
 }
 
 /// The tilings up to symmetry of every figure by a dissection's pieces,

@@ -16,6 +16,7 @@ use std::fmt;
 use dissect_core::{Cell, Figure, LatticeKind};
 use serde_json::{json, Value};
 
+use crate::disassembly::{disassemble, Limits};
 use crate::geometry::Motions;
 
 /// Cells of one figure that must end in the same piece, one region per
@@ -123,6 +124,10 @@ pub enum ConstraintError {
     /// Occurs when figures have different numbers of black cells.
     #[error("impossible with --checkerboard: the figures have different numbers of black cells ({0}); pieces that keep their colours cannot make them all")]
     ColourCounts(String),
+    /// Occurs when a level of 2 or more is asked of flat figures (every
+    /// flat piece lifts off: level 1).
+    #[error("impossible: --min-level {0} on a flat lattice (every piece of a flat figure lifts off: level 1)")]
+    FlatLevel(usize),
     /// Occurs when the symmetry weight is negative or not a number.
     #[error("--symmetry-weight must be a number >= 0, not {0}")]
     SymmetryWeight(String),
@@ -139,6 +144,7 @@ impl ConstraintError {
                 | ConstraintError::MinTooLarge { .. }
                 | ConstraintError::RegionTooLarge { .. }
                 | ConstraintError::ColourCounts(_)
+                | ConstraintError::FlatLevel(_)
         )
     }
 }
@@ -294,7 +300,15 @@ pub struct Constraints {
     max_piece: Option<usize>,
     checkerboard: bool,
     symmetry_weight: f64,
+    assemblable: bool,
+    min_level: Option<usize>,
 }
+
+/// The positions a constraint check may explore to take one figure apart
+/// ([`crate::disassembly::Limits::max_states`]): a count of work, not a
+/// time, so a check gives the same verdict on every machine; a figure not
+/// decided within it counts as not assemblable.
+pub const CHECK_STATES: usize = 20_000;
 
 /// One way a dissection breaks its constraints.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -330,6 +344,20 @@ pub enum Violation {
         /// The figure (0-based).
         figure: usize,
     },
+    /// A 3D figure cannot be taken apart by straight moves (or was not
+    /// decided within [`CHECK_STATES`] positions).
+    NotAssemblable {
+        /// The figure (0-based).
+        figure: usize,
+    },
+    /// A figure comes apart with fewer moves before its first removal than
+    /// `--min-level`.
+    LevelTooLow {
+        /// The figure (0-based).
+        figure: usize,
+        /// Its level.
+        level: usize,
+    },
 }
 
 impl fmt::Display for Violation {
@@ -353,6 +381,16 @@ impl fmt::Display for Violation {
             Violation::Colour { piece, figure } => write!(
                 f,
                 "piece {piece} changes the colour of its cells to fit figure {}",
+                figure + 1
+            ),
+            Violation::NotAssemblable { figure } => write!(
+                f,
+                "figure {} cannot be taken apart by straight moves",
+                figure + 1
+            ),
+            Violation::LevelTooLow { figure, level } => write!(
+                f,
+                "figure {} comes apart at level {level}, below --min-level",
                 figure + 1
             ),
         }
@@ -388,6 +426,8 @@ impl Constraints {
             && self.min_piece.is_none()
             && self.max_piece.is_none()
             && !self.checkerboard
+            && !self.assemblable
+            && self.min_level.is_none()
     }
 
     /// Adds keep regions.
@@ -407,6 +447,25 @@ impl Constraints {
     pub fn with_checkerboard(mut self, on: bool) -> Constraints {
         self.checkerboard = on;
         self
+    }
+
+    /// Sets the assembly rules: every 3D figure comes apart by straight
+    /// moves (`assemblable`), with at least `min_level` moves before its
+    /// first removal (which implies `assemblable`).
+    pub fn with_assembly(mut self, assemblable: bool, min_level: Option<usize>) -> Constraints {
+        self.assemblable = assemblable || min_level.is_some();
+        self.min_level = min_level;
+        self
+    }
+
+    /// Whether every 3D figure must come apart by straight moves.
+    pub fn assemblable(&self) -> bool {
+        self.assemblable
+    }
+
+    /// The least level every figure must have.
+    pub fn min_level(&self) -> Option<usize> {
+        self.min_level
     }
 
     /// Sets the symmetry weight.
@@ -449,6 +508,9 @@ impl Constraints {
         }
         if self.max_piece == Some(0) {
             return Err(ConstraintError::ZeroSize("max-piece"));
+        }
+        if self.min_level == Some(0) {
+            return Err(ConstraintError::ZeroSize("min-level"));
         }
         if let (Some(min), Some(max)) = (self.min_piece, self.max_piece) {
             if min > max {
@@ -537,6 +599,14 @@ impl Constraints {
                 return Err(ConstraintError::MinTooLarge { min, area });
             }
         }
+        if self.min_level == Some(0) {
+            return Err(ConstraintError::ZeroSize("min-level"));
+        }
+        if let (Some(level), Some(f)) = (self.min_level, figures.first()) {
+            if level >= 2 && f.lattice().lattice().dim() < 3 {
+                return Err(ConstraintError::FlatLevel(level));
+            }
+        }
         if !(self.symmetry_weight.is_finite() && self.symmetry_weight >= 0.0) {
             return Err(ConstraintError::SymmetryWeight(
                 self.symmetry_weight.to_string(),
@@ -597,8 +667,38 @@ impl Constraints {
         })
     }
 
+    /// For the assembly rules: every figure that does not come apart
+    /// (within [`CHECK_STATES`] positions) or comes apart below
+    /// `--min-level`.
+    fn check_assembly(&self, motions: &Motions, pieces: &[Vec<Vec<Cell>>]) -> Vec<Violation> {
+        if !self.assemblable {
+            return Vec::new();
+        }
+        let lattice = motions.lattice().lattice();
+        let limits = Limits {
+            max_states: CHECK_STATES,
+            ..Limits::default()
+        };
+        let mut out = Vec::new();
+        for (figure, fig) in pieces.iter().enumerate() {
+            match disassemble(lattice, fig, limits)
+                .ok()
+                .and_then(|d| d.level())
+            {
+                None => out.push(Violation::NotAssemblable { figure }),
+                Some(level) if self.min_level.is_some_and(|m| level < m) => {
+                    out.push(Violation::LevelTooLow { figure, level })
+                }
+                Some(_) => {}
+            }
+        }
+        out
+    }
+
     /// Every way the dissection `pieces[f][i]` (a valid dissection: piece
-    /// `i` congruent in every figure) breaks these constraints.
+    /// `i` congruent in every figure) breaks these constraints. The
+    /// assembly rules are checked last and only when all else holds (they
+    /// cost a disassembly search per figure).
     pub fn check(&self, motions: &Motions, pieces: &[Vec<Vec<Cell>>]) -> Vec<Violation> {
         let mut out: Vec<Violation> = self
             .region_owners(pieces)
@@ -641,6 +741,9 @@ impl Constraints {
                 }
             }
         }
+        if out.is_empty() {
+            out = self.check_assembly(motions, pieces);
+        }
         out
     }
 
@@ -679,6 +782,12 @@ impl Constraints {
         }
         if self.symmetry_weight != 0.0 {
             m.insert("symmetry_weight".into(), json!(self.symmetry_weight));
+        }
+        if self.assemblable {
+            m.insert("assemblable".into(), json!(true));
+        }
+        if let Some(v) = self.min_level {
+            m.insert("min_level".into(), json!(v));
         }
         Value::Object(m)
     }

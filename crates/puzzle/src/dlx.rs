@@ -6,12 +6,18 @@
 //! capacity is the number of copies, so tilings that only swap identical
 //! pieces are found once.
 //!
-//! The search visits every solution, checks a stop flag and a deadline every
-//! few thousand nodes, and reports progress (an estimate of the fraction of
+//! The search visits every solution, checks a stop flag and a deadline
+//! after every [`CHECK_WORK`] link updates (a measure of work, not of
+//! nodes: one node of a large board can update millions of links), and
+//! reports progress (an estimate of the fraction of
 //! the search tree done) through a callback.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
+
+/// Link updates between two checks of the stop flag and the deadline
+/// (well under a millisecond of work).
+const CHECK_WORK: u64 = 1 << 16;
 
 /// An exact cover problem under construction.
 #[derive(Clone, Debug)]
@@ -130,6 +136,7 @@ impl ExactCover {
             branch: Vec::new(),
             end: None,
             last_report: Instant::now(),
+            next_check: 0,
         };
         links.solve(&mut state, &mut visit, &mut limits);
         let end = state.end.unwrap_or(End::Complete);
@@ -148,6 +155,8 @@ struct State {
     branch: Vec<(usize, usize)>,
     end: Option<End>,
     last_report: Instant,
+    /// The work count at which the limits are checked next.
+    next_check: u64,
 }
 
 /// The dancing links: node 0 is the root, nodes `1..=items` the item
@@ -166,6 +175,8 @@ struct Links {
     items: usize,
     /// The group of each row, and its node in the group's column.
     group: Vec<usize>,
+    /// Link updates so far (the search's measure of work).
+    work: u64,
 }
 
 impl Links {
@@ -181,6 +192,7 @@ impl Links {
             size: vec![0; headers],
             items: p.items,
             group: Vec::with_capacity(p.rows.len()),
+            work: 0,
         };
         for h in 0..headers {
             l.up.push(h);
@@ -227,6 +239,7 @@ impl Links {
                 self.down[u] = d;
                 self.up[d] = u;
                 self.size[self.col[j]] -= 1;
+                self.work += 1;
                 j = self.right[j];
             }
             i = self.down[i];
@@ -242,6 +255,7 @@ impl Links {
                 self.down[u] = j;
                 self.up[d] = j;
                 self.size[self.col[j]] += 1;
+                self.work += 1;
                 j = self.left[j];
             }
             i = self.up[i];
@@ -315,7 +329,8 @@ impl Links {
         limits: &mut Limits<'_>,
     ) {
         state.progress.nodes += 1;
-        if state.progress.nodes.is_multiple_of(4096) {
+        if self.work >= state.next_check {
+            state.next_check = self.work + CHECK_WORK;
             if limits.stop.is_some_and(|s| s.load(Ordering::Relaxed)) {
                 state.end = Some(End::Stopped);
                 return;

@@ -155,8 +155,20 @@ impl Motions {
     /// Every distinct placement (as a sorted cell set) of `piece` inside
     /// `region` under the allowed motions.
     pub fn placements(&self, piece: &[Cell], region: &HashSet<Cell>) -> Vec<Vec<Cell>> {
+        self.placements_until(piece, region, &|| false)
+            .unwrap_or_default()
+    }
+
+    /// [`Motions::placements`], asking `interrupted` before each of the
+    /// lattice's orientations (`None` when it says so).
+    pub fn placements_until(
+        &self,
+        piece: &[Cell],
+        region: &HashSet<Cell>,
+        interrupted: &dyn Fn() -> bool,
+    ) -> Option<Vec<Vec<Cell>>> {
         let Some(&first) = piece.first() else {
-            return Vec::new();
+            return Some(Vec::new());
         };
         let l = self.geometry();
         let pts = self.points(piece);
@@ -165,6 +177,9 @@ impl Motions {
         let mut seen: HashSet<Vec<Cell>> = HashSet::new();
         let mut out = Vec::new();
         for g in &self.syms {
+            if interrupted() {
+                return None;
+            }
             let img: Vec<Point> = pts.iter().map(|p| g.apply(*p)).collect();
             let a = g.apply(anchor_cell);
             for q in &region_pts {
@@ -188,7 +203,7 @@ impl Motions {
                 }
             }
         }
-        out
+        Some(out)
     }
 
     /// The allowed motions that map `region` onto itself (its symmetries
@@ -202,6 +217,35 @@ impl Motions {
             }
         }
         out
+    }
+
+    /// The canonical form of a cut of a region into pieces (each a list of
+    /// cells) under `symmetries`, motions that map the region onto itself
+    /// ([`Motions::symmetries_of`]): the smallest image, each piece sorted
+    /// and the pieces sorted. Two cuts of the region are the same up to its
+    /// symmetries exactly when their canonical forms are equal; the
+    /// identity among `symmetries` makes the cut itself a candidate.
+    pub fn canonical_cut(&self, symmetries: &[Transform], pieces: &[Vec<Cell>]) -> Vec<Vec<Cell>> {
+        let image = |m: Option<&Transform>| {
+            let mut out: Vec<Vec<Cell>> = pieces
+                .iter()
+                .map(|p| {
+                    let mut cells: Vec<Cell> = p
+                        .iter()
+                        .map(|&c| m.map_or(Some(c), |m| self.move_cell(m, c)).unwrap_or(c))
+                        .collect();
+                    cells.sort_unstable();
+                    cells
+                })
+                .collect();
+            out.sort_unstable();
+            out
+        };
+        symmetries
+            .iter()
+            .map(|m| image(Some(m)))
+            .min()
+            .unwrap_or_else(|| image(None))
     }
 
     /// Applies a motion to a cell (`None` when the image is not a cell).

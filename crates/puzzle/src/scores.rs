@@ -83,6 +83,11 @@ pub struct Scores {
     /// short.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub assemblies: Option<u64>,
+    /// Each figure's disassembly level (`None` for a figure that does not
+    /// come apart), when computed (see [`crate::disassembly`]); written as
+    /// the solution file's own `levels` key, not among the scores.
+    #[serde(skip)]
+    pub levels: Option<Vec<Option<usize>>>,
 }
 
 impl Scores {
@@ -104,7 +109,17 @@ impl Scores {
             symmetry,
             objective: variance - symmetry_weight * symmetry as f64,
             assemblies: None,
+            levels: None,
         }
+    }
+
+    /// The smallest level over the figures; `None` when the levels were not
+    /// computed or a figure does not come apart.
+    pub fn least_level(&self) -> Option<usize> {
+        self.levels
+            .as_ref()
+            .and_then(|l| l.iter().copied().collect::<Option<Vec<usize>>>())
+            .and_then(|l| l.into_iter().min())
     }
 }
 
@@ -138,16 +153,20 @@ pub enum Rank {
     Symmetry,
     /// Fewest assemblies (tilings up to symmetry, summed over the figures).
     Unique,
+    /// The highest smallest disassembly level over the figures first (the
+    /// most interlocking puzzle); one that does not come apart ranks last.
+    Level,
 }
 
 impl Rank {
     /// Every criterion.
-    pub const ALL: [Rank; 5] = [
+    pub const ALL: [Rank; 6] = [
         Rank::Variance,
         Rank::Smallest,
         Rank::Shapes,
         Rank::Symmetry,
         Rank::Unique,
+        Rank::Level,
     ];
 
     /// The name used on the command line.
@@ -158,12 +177,18 @@ impl Rank {
             Rank::Shapes => "shapes",
             Rank::Symmetry => "symmetry",
             Rank::Unique => "unique",
+            Rank::Level => "level",
         }
     }
 
     /// Whether ranking needs the assembly counts.
     pub fn needs_assemblies(self) -> bool {
         self == Rank::Unique
+    }
+
+    /// Whether ranking needs the disassembly levels.
+    pub fn needs_levels(self) -> bool {
+        self == Rank::Level
     }
 
     /// `Less` when `a` is better than `b`: fewer pieces first, then this
@@ -186,6 +211,10 @@ impl Rank {
             Rank::Shapes => by_shapes(a, b),
             Rank::Symmetry => by_symmetry(a, b),
             Rank::Unique => by_unique(a, b),
+            Rank::Level => {
+                let least = |s: &Scores| s.least_level().map_or(-1, |l| l as i64);
+                least(b).cmp(&least(a))
+            }
         };
         a.pieces
             .cmp(&b.pieces)
@@ -211,7 +240,7 @@ impl fmt::Display for Rank {
 
 /// Occurs when a ranking name is unknown.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown ranking {0:?} (expected variance, smallest, shapes, symmetry or unique)")]
+#[error("unknown ranking {0:?} (expected variance, smallest, shapes, symmetry, unique or level)")]
 pub struct UnknownRank(pub String);
 
 impl FromStr for Rank {

@@ -68,6 +68,7 @@ fn each_rank_picks_its_own_best() {
         symmetry,
         objective: variance,
         assemblies,
+        levels: None,
     };
     let items = vec![
         (s(5, 0.2, 2, 4, 0, Some(9)), "even"),

@@ -1,7 +1,10 @@
 //! The data of the motion player (`assets/player.js`): for every figure the
 //! pieces' outlines (2D) or cubes (3D) in lattice units, the rigid motion in
 //! the plane or in space that carries each piece from figure 0 to that
-//! figure, and an assembly order. The player only interpolates these
+//! figure, and an assembly order (3D: the reverse of the disassembly plan
+//! of `dissect_puzzle::disassembly` when the figure comes apart, so no
+//! piece is placed where a hand could not put it; the figure's `level`
+//! beside it). The player only interpolates these
 //! motions; it derives no geometry of its own.
 //!
 //! The motions come from `dissect_core::motion` (a symmetry and a
@@ -13,6 +16,7 @@
 use dissect_core::motion::{assembly_order, motions};
 use dissect_core::transform::Transform;
 use dissect_core::{Cell, Lattice, LatticeKind};
+use dissect_puzzle::disassembly::{disassemble, Disassembly, Limits, Plan};
 use serde_json::{json, Value};
 
 use crate::scene::cell_centre;
@@ -150,6 +154,62 @@ fn invert(a: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
     Some(inv)
 }
 
+/// The positions a disassembly may explore for the player's order (a count
+/// of work: the same order on every machine).
+pub const PLAN_STATES: usize = 20_000;
+
+/// An order in which a person can put the pieces of one figure together,
+/// and the figure's disassembly level. 3D: the reverse of the order in which
+/// the disassembly plan leaves each piece on its own; a figure that does
+/// not come apart (or is not decided within [`PLAN_STATES`]) gets
+/// [`assembly_order`] and no level. Flat figures: [`assembly_order`],
+/// level 1.
+pub fn assembly_plan_order(
+    lattice: &dyn Lattice,
+    pieces: &[Vec<Cell>],
+) -> (Vec<usize>, Option<usize>) {
+    let limits = Limits {
+        max_states: PLAN_STATES,
+        ..Limits::default()
+    };
+    match disassemble(lattice, pieces, limits) {
+        Ok(Disassembly::Apart(plan)) if lattice.dim() == 3 => {
+            (reverse_of_plan(&plan, pieces.len()), Some(plan.level))
+        }
+        Ok(Disassembly::Apart(plan)) => (assembly_order(lattice, pieces), Some(plan.level)),
+        _ => (assembly_order(lattice, pieces), None),
+    }
+}
+
+/// The pieces in the reverse of the order the plan leaves them alone in a
+/// part of their own.
+fn reverse_of_plan(plan: &Plan, n: usize) -> Vec<usize> {
+    let mut part = vec![0usize; n];
+    let mut parts = 1;
+    let mut alone: Vec<usize> = Vec::with_capacity(n);
+    for m in plan.moves.iter().filter(|m| m.removed) {
+        let Some(&first) = m.pieces.first() else {
+            continue;
+        };
+        let old = part[first];
+        for &i in &m.pieces {
+            part[i] = parts;
+        }
+        for p in [parts, old] {
+            let members: Vec<usize> = (0..n).filter(|&i| part[i] == p).collect();
+            if let [i] = members[..] {
+                if !alone.contains(&i) {
+                    alone.push(i);
+                }
+            }
+        }
+        parts += 1;
+    }
+    alone.extend((0..n).filter(|i| !alone.contains(i)).collect::<Vec<_>>());
+    alone.reverse();
+    alone
+}
+
 /// The player's data of a scene as a JSON value (format
 /// `dissect-animation/1`; see `assets/player.js`).
 pub fn data(scene: &Scene) -> Result<Value, RenderError> {
@@ -213,12 +273,13 @@ pub fn data(scene: &Scene) -> Result<Value, RenderError> {
                     v
                 })
                 .collect();
-            let order = assembly_order(l, &pieces[f]);
+            let (order, level) = assembly_plan_order(l, &pieces[f]);
             json!({
                 "name": scene.name(f),
                 "min": lo,
                 "max": hi,
                 "order": order,
+                "level": level,
                 "pieces": ps,
             })
         })
@@ -269,6 +330,55 @@ mod tests {
                 assert!((v - if r == c { 1.0 } else { 0.0 }).abs() < 1e-9);
             }
         }
+    }
+
+    /// A block with a closed channel and a window (B slides 2 along x, then
+    /// leaves along y): the block goes first, then B.
+    #[test]
+    fn the_3d_order_is_the_plan_reversed() {
+        let l = LatticeKind::Cubic.lattice();
+        let b: Vec<Cell> = vec![[1, 1, 1], [2, 1, 1], [1, 1, 2]];
+        let free = [[3, 1, 1], [4, 1, 1], [2, 1, 2], [3, 1, 2], [4, 1, 2]];
+        let window = [[3, 2, 1], [4, 2, 1], [3, 2, 2], [4, 2, 2]];
+        let a: Vec<Cell> = l
+            .cells_in_box([0, 0, 0], [5, 2, 3])
+            .into_iter()
+            .filter(|c| !b.contains(c) && !free.contains(c) && !window.contains(c))
+            .collect();
+        // A loose cube on top of the block's far end, taken off first.
+        let c: Vec<Cell> = vec![[0, 0, 4]];
+        let (order, level) = assembly_plan_order(l, &[a, b, c]);
+        assert_eq!(level, Some(1));
+        assert_eq!(order.len(), 3);
+        let at = |i: usize| order.iter().position(|&p| p == i).unwrap();
+        assert!(at(0) < at(1), "{order:?}");
+        // Two linked rings: no plan, the stacking order and no level.
+        let ring_a: Vec<Cell> = [
+            [0, 1],
+            [1, 1],
+            [2, 1],
+            [0, 2],
+            [2, 2],
+            [0, 3],
+            [1, 3],
+            [2, 3],
+        ]
+        .map(|[x, y]| [x, y, 1])
+        .to_vec();
+        let ring_b: Vec<Cell> = [
+            [2, 0],
+            [3, 0],
+            [4, 0],
+            [2, 1],
+            [4, 1],
+            [2, 2],
+            [3, 2],
+            [4, 2],
+        ]
+        .map(|[y, z]| [1, y, z])
+        .to_vec();
+        let (order, level) = assembly_plan_order(l, &[ring_a, ring_b]);
+        assert_eq!((order.len(), level), (2, None));
     }
 
     #[test]

@@ -244,33 +244,7 @@ type FaceLoops = (usize, i32, Vec<Vec<[i32; 3]>>);
 /// flat face.
 fn voxel_mesh(cells: &[Cell], opts: &PhysicalOptions) -> Result<Mesh, RenderError> {
     let c = opts.clearance_mm / opts.cell_mm;
-    let set: HashSet<Cell> = cells.iter().copied().collect();
-    // The solid on a grid of "lines": with a clearance every unit is split
-    // into three slabs [k, k+c], [k+c, k+1-c], [k+1-c, k+1].
-    let (solid, split): (HashSet<Cell>, i32) = if c == 0.0 {
-        (set.clone(), 1)
-    } else {
-        let mut solid = HashSet::new();
-        for &[x, y, z] in cells {
-            for s in 0..27 {
-                let sub = [s % 3, s / 3 % 3, s / 9];
-                let needs = |k: i32, s: i32| match s {
-                    0 => vec![k - 1, k],
-                    1 => vec![k],
-                    _ => vec![k, k + 1],
-                };
-                let (nx, ny, nz) = (needs(x, sub[0]), needs(y, sub[1]), needs(z, sub[2]));
-                let inside = nx.iter().all(|&a| {
-                    ny.iter()
-                        .all(|&b| nz.iter().all(|&cc| set.contains(&[a, b, cc])))
-                });
-                if inside {
-                    solid.insert([3 * x + sub[0], 3 * y + sub[1], 3 * z + sub[2]]);
-                }
-            }
-        }
-        (solid, 3)
-    };
+    let (solid, split) = shrunk_solid(cells, c);
     let coord = |line: i32| -> f64 {
         if split == 1 {
             return line as f64;
@@ -282,68 +256,8 @@ fn voxel_mesh(cells: &[Cell], opts: &PhysicalOptions) -> Result<Mesh, RenderErro
             _ => k + 1.0 - c,
         }
     };
-    // Exposed faces grouped by (axis, direction, plane line).
-    let mut groups: BTreeMap<(usize, i32, i32), Vec<Cell>> = BTreeMap::new();
-    let mut sorted: Vec<Cell> = solid.iter().copied().collect();
-    sorted.sort();
-    for &v in &sorted {
-        for axis in 0..3 {
-            for dir in [-1, 1] {
-                let mut n = v;
-                n[axis] += dir;
-                if solid.contains(&n) {
-                    continue;
-                }
-                let plane = if dir > 0 { v[axis] + 1 } else { v[axis] };
-                let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);
-                groups
-                    .entry((axis, dir, plane))
-                    .or_default()
-                    .push([v[u], v[w], 0]);
-            }
-        }
-    }
-    // Face loops in grid lines (3D integer points).
-    let mut faces: Vec<FaceLoops> = Vec::new();
-    for (&(axis, dir, plane), squares) in &groups {
-        let outline = Outline::of_cells(LatticeKind::Square, squares);
-        let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);
-        let loops = outline
-            .loops()
-            .iter()
-            .map(|l| {
-                l.points()
-                    .iter()
-                    .map(|p| {
-                        let mut q = [0; 3];
-                        q[axis] = plane;
-                        q[u] = (p[0] / 2) as i32;
-                        q[w] = (p[1] / 2) as i32;
-                        q
-                    })
-                    .collect()
-            })
-            .collect();
-        faces.push((axis, dir, loops));
-    }
-    // Every corner of every face, by the line it lies on, to split edges at
-    // T-junctions.
-    let mut on_line: HashMap<(usize, i32, i32), Vec<i32>> = HashMap::new();
-    let mut corners: HashSet<[i32; 3]> = HashSet::new();
-    for (_, _, loops) in &faces {
-        for p in loops.iter().flatten() {
-            corners.insert(*p);
-        }
-    }
-    for p in &corners {
-        for axis in 0..3 {
-            let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);
-            on_line.entry((axis, p[u], p[w])).or_default().push(p[axis]);
-        }
-    }
-    for v in on_line.values_mut() {
-        v.sort_unstable();
-    }
+    let faces = face_loops(&solid);
+    let on_line = corners_on_lines(&faces);
     let s = opts.cell_mm;
     let phys = |q: [i32; 3]| [coord(q[0]) * s, -coord(q[1]) * s, coord(q[2]) * s];
     let mut out = Vec::new();
@@ -396,6 +310,111 @@ fn voxel_mesh(cells: &[Cell], opts: &PhysicalOptions) -> Result<Mesh, RenderErro
         let _ = pts2;
     }
     Ok(Mesh::new(out))
+}
+
+/// The solid on a grid of "lines" and the lines per unit: with a
+/// clearance `c` (in cells) every unit is split into three slabs
+/// [k, k+c], [k+c, k+1-c], [k+1-c, k+1].
+fn shrunk_solid(cells: &[Cell], c: f64) -> (HashSet<Cell>, i32) {
+    let set: HashSet<Cell> = cells.iter().copied().collect();
+    if c == 0.0 {
+        (set.clone(), 1)
+    } else {
+        let mut solid = HashSet::new();
+        for &[x, y, z] in cells {
+            for s in 0..27 {
+                let sub = [s % 3, s / 3 % 3, s / 9];
+                let needs = |k: i32, s: i32| match s {
+                    0 => vec![k - 1, k],
+                    1 => vec![k],
+                    _ => vec![k, k + 1],
+                };
+                let (nx, ny, nz) = (needs(x, sub[0]), needs(y, sub[1]), needs(z, sub[2]));
+                let inside = nx.iter().all(|&a| {
+                    ny.iter()
+                        .all(|&b| nz.iter().all(|&cc| set.contains(&[a, b, cc])))
+                });
+                if inside {
+                    solid.insert([3 * x + sub[0], 3 * y + sub[1], 3 * z + sub[2]]);
+                }
+            }
+        }
+        (solid, 3)
+    }
+}
+
+/// The exposed faces of `solid` grouped by (axis, direction, plane line),
+/// each as loops of grid points.
+fn face_loops(solid: &HashSet<Cell>) -> Vec<FaceLoops> {
+    // Exposed faces grouped by (axis, direction, plane line).
+    let mut groups: BTreeMap<(usize, i32, i32), Vec<Cell>> = BTreeMap::new();
+    let mut sorted: Vec<Cell> = solid.iter().copied().collect();
+    sorted.sort();
+    for &v in &sorted {
+        for axis in 0..3 {
+            for dir in [-1, 1] {
+                let mut n = v;
+                n[axis] += dir;
+                if solid.contains(&n) {
+                    continue;
+                }
+                let plane = if dir > 0 { v[axis] + 1 } else { v[axis] };
+                let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);
+                groups
+                    .entry((axis, dir, plane))
+                    .or_default()
+                    .push([v[u], v[w], 0]);
+            }
+        }
+    }
+    // Face loops in grid lines (3D integer points).
+    let mut faces: Vec<FaceLoops> = Vec::new();
+    for (&(axis, dir, plane), squares) in &groups {
+        let outline = Outline::of_cells(LatticeKind::Square, squares);
+        let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);
+        let loops = outline
+            .loops()
+            .iter()
+            .map(|l| {
+                l.points()
+                    .iter()
+                    .map(|p| {
+                        let mut q = [0; 3];
+                        q[axis] = plane;
+                        q[u] = (p[0] / 2) as i32;
+                        q[w] = (p[1] / 2) as i32;
+                        q
+                    })
+                    .collect()
+            })
+            .collect();
+        faces.push((axis, dir, loops));
+    }
+    faces
+}
+
+/// Every corner of every face, by the line it lies on (axis and the two
+/// other coordinates), sorted along it: to split edges at T-junctions.
+fn corners_on_lines(faces: &[FaceLoops]) -> HashMap<(usize, i32, i32), Vec<i32>> {
+    // Every corner of every face, by the line it lies on, to split edges at
+    // T-junctions.
+    let mut on_line: HashMap<(usize, i32, i32), Vec<i32>> = HashMap::new();
+    let mut corners: HashSet<[i32; 3]> = HashSet::new();
+    for (_, _, loops) in faces {
+        for p in loops.iter().flatten() {
+            corners.insert(*p);
+        }
+    }
+    for p in &corners {
+        for axis in 0..3 {
+            let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);
+            on_line.entry((axis, p[u], p[w])).or_default().push(p[axis]);
+        }
+    }
+    for v in on_line.values_mut() {
+        v.sort_unstable();
+    }
+    on_line
 }
 
 #[cfg(test)]

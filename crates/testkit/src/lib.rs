@@ -1,10 +1,12 @@
 //! Inputs the tests of several crates and the fuzz loop share: pictures
 //! whose headers claim huge sizes (decompression bombs), SVG bombs, and the
-//! closed box mesh. Plain bytes and strings: no dependency, no I/O.
+//! closed box mesh, and an independent replay of disassembly plans
+//! ([`disassembly`]). Plain bytes and strings: no dependency, no I/O.
 //! Besides, [`repo`]: where the tests find the benchmark instances of the
 //! repository and how they run the independent solution checkers (this
 //! module reads files and runs processes).
 
+pub mod disassembly;
 pub mod repo;
 
 /// An SVG of 111 bytes whose width and height are 10^9: a renderer that

@@ -28,7 +28,7 @@ use axum::response::sse::{Event as SseEvent, KeepAlive, Sse};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use axum::{Json, Router};
-use dissect_engine::{EngineError, OptionsError, Rank, RunConfig, RunOptions};
+use dissect_engine::{EngineError, OptionsError, Rank, RunConfig, RunOptions, TimeLimit};
 use futures_util::Stream;
 use serde::de::DeserializeOwned;
 use serde::Deserialize;
@@ -244,12 +244,17 @@ async fn start_solve(
     let figs: Vec<_> = as_given.iter().map(figures::normalized).collect();
     figures::check_equal_areas(&req.figures, &figs)?;
     let max_t = s.limits.max_time_limit();
-    let time_limit = req.time_limit.unwrap_or(max_t);
-    if !(time_limit.is_finite() && time_limit > 0.0 && time_limit <= max_t) {
-        return Err(ApiError::BadValue(format!(
-            "time_limit must be more than 0 and at most {max_t} seconds, got {time_limit}"
-        )));
-    }
+    let seconds = req.time_limit.unwrap_or(max_t);
+    // The engine's rule (NaN and negatives refused), then the server's cap:
+    // a limit, more than 0 and at most the server's.
+    let time_limit = TimeLimit::new(seconds)
+        .ok()
+        .filter(|l| seconds > 0.0 && l.seconds().is_some_and(|t| t <= max_t))
+        .ok_or_else(|| {
+            ApiError::BadValue(format!(
+                "time_limit must be more than 0 and at most {max_t} seconds, got {seconds}"
+            ))
+        })?;
     let explorations = req
         .explorations
         .unwrap_or(RunConfig::default().explorations);
@@ -293,7 +298,7 @@ async fn start_solve(
         area_weight: req.area_weight.unwrap_or(defaults.area_weight),
         explorations,
         max_pieces: req.max_pieces,
-        time_limit: Some(time_limit),
+        time_limit,
         solutions,
         rank,
         constraints,

@@ -72,7 +72,7 @@ fn assemblies_bad_input() {
         "--solution",
         "dominoes.json",
         "--time-limit",
-        "0",
+        "nan",
         "rect.txt",
     ])
     .expect_code(2)

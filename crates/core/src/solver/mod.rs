@@ -50,8 +50,9 @@ pub use paper::{solve, solve_with};
 #[cfg(test)]
 pub(crate) use search::{Level, Search};
 
-/// The most worker threads a search may ask for.
-pub const MAX_THREADS: usize = 1024;
+/// The most worker threads a search may ask for (every front end checks
+/// it through `dissect_engine::check_threads`).
+pub const MAX_THREADS: usize = 256;
 
 /// Progress reports, sent while the search runs.
 #[derive(Clone, Debug, PartialEq)]

@@ -199,200 +199,41 @@ impl<'a> Search<'a> {
 
     /// The explorations of `level` in `round`, from `parents` (the kept
     /// candidates of the level below; unused at level 1), in batches, with
-    /// the near-miss extra rounds.
+    /// the near-miss extra rounds (the steps: [`LevelRun`]).
     pub(crate) fn level(
         &self,
         round: usize,
         level: usize,
         from: From<'_>,
     ) -> Result<Level, SolveError> {
-        let options = self.options;
-        let pieces = level + 1;
-        // The descent is a local step from a dissection: a quarter of a
-        // level's explorations, no extra rounds.
-        let (n, extra_rounds, first) = match from {
-            From::Below(_) => (options.explorations.max(1), options.extra_rounds, 0),
-            From::Lifted(_) => (options.explorations.div_ceil(4).max(1), 0, 0),
-            From::Above(_, first) => (options.explorations.div_ceil(4).max(1), 0, first),
-        };
+        let run = LevelRun::new(self, round, level, from);
         self.observer.on_event(&Event::LevelStarted {
             level,
-            pieces,
-            explorations: n,
+            pieces: level + 1,
+            explorations: run.n,
         });
-        let done = AtomicUsize::new(0);
-        let total = AtomicUsize::new(n);
-        let best_seen = Mutex::new((f64::INFINITY, u64::MAX));
-        let note = |result: &(Candidate, Score)| {
-            let d = done.fetch_add(1, Ordering::Relaxed) + 1;
-            let (bs, bm) = {
-                let mut g = best_seen.lock().unwrap_or_else(|e| e.into_inner());
-                g.0 = g.0.min(result.1.value);
-                g.1 = g.1.min(result.1.mismatch);
-                *g
-            };
-            // Explorations run ahead of the deciding batch count too, up to
-            // the level's total.
-            let total = total.load(Ordering::Relaxed);
-            self.observer.on_event(&Event::Exploration {
-                level,
-                done: d.min(total),
-                total,
-                best_score: bs,
-                best_mismatch: bm,
-            });
-        };
-        let run_one = |i: usize| -> (Candidate, Score) {
-            let result = match from {
-                From::Below(parents) | From::Lifted(parents) => explore::explore_one(
-                    &self.problem,
-                    options,
-                    round,
-                    level,
-                    i,
-                    false,
-                    parents.len(),
-                    |p| &parents[p].0,
-                    self.stop,
-                ),
-                From::Above(parent, _) => explore::explore_one(
-                    &self.problem,
-                    options,
-                    round,
-                    level,
-                    i,
-                    true,
-                    1,
-                    |_| parent,
-                    self.stop,
-                ),
-            };
-            note(&result);
-            result
-        };
-        // What an executor gets as parents (made once per level, only for one).
-        let (parents, descent): (Vec<Exploration>, bool) = match (self.executor, from) {
-            (None, _) => (Vec::new(), false),
-            (Some(_), From::Below(parents) | From::Lifted(parents)) => (
-                parents
-                    .iter()
-                    .map(|(candidate, score)| Exploration {
-                        candidate: candidate.clone(),
-                        score: *score,
-                    })
-                    .collect(),
-                false,
-            ),
-            // The descent's parent is a dissection; explorations read only
-            // a parent's labels, never its score.
-            (Some(_), From::Above(parent, _)) => (
-                vec![Exploration {
-                    candidate: parent.clone(),
-                    score: Score {
-                        value: 0.0,
-                        mismatch: 0,
-                        split: 0,
-                        valid: true,
-                        variance: 0.0,
-                    },
-                }],
-                true,
-            ),
-        };
-        let batch = options.batch.max(1);
-        let near_miss = options.near_miss(self.figures.len(), self.figures[0].len());
-        // Results are decided batch by batch in index order, whoever runs
-        // them; those past the batch that decides the level are dropped, so
-        // the answer does not depend on the threads.
-        let decide = |mut feed: Feed<'_, '_>| -> Result<Level, SolveError> {
-            let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(n);
-            let mut start = first;
-            let mut planned = first + n;
-            let mut stopped = false;
-            while start < planned {
-                let end = (start + batch).min(planned);
-                let mut chunk: Vec<(Candidate, Score)> = match &mut feed {
-                    Feed::Pool(taker) => taker.take(end - start),
-                    Feed::Executor(ex) => {
-                        let batch = Batch {
-                            round,
-                            level,
-                            descent,
-                            indices: start..end,
-                            parents: &parents,
-                        };
-                        let got = ex.run(&batch).map_err(ExplorationError::Executor)?;
-                        if got.len() != end - start {
-                            return Err(ExplorationError::Count {
-                                got: got.len(),
-                                want: end - start,
-                            }
-                            .into());
-                        }
-                        let mut chunk = Vec::with_capacity(got.len());
-                        for e in got {
-                            e.check(&self.problem)?;
-                            let result = (e.candidate, e.score);
-                            note(&result);
-                            chunk.push(result);
-                        }
-                        chunk
-                    }
-                };
-                for (cand, score) in &mut chunk {
-                    self.judge(cand, score);
-                }
-                results.extend(chunk);
-                start = end;
-                if self.stopped() {
-                    stopped = true;
-                    break;
-                }
-                if !options.full_levels && results.iter().any(|(_, s)| s.valid) {
-                    break;
-                }
-                // A level that ends a near miss gets more rounds of
-                // explorations (new streams, same parents) before the next
-                // level is tried.
-                let best_mismatch = results
-                    .iter()
-                    .map(|(_, s)| s.mismatch)
-                    .min()
-                    .unwrap_or(u64::MAX);
-                if start == planned
-                    && planned - first < n.saturating_mul(1 + extra_rounds)
-                    && best_mismatch <= near_miss
-                {
-                    planned += n;
-                    if let Feed::Pool(taker) = &mut feed {
-                        taker.extend_to(planned);
-                    }
-                    total.store(planned - first, Ordering::Relaxed);
-                    self.observer.on_event(&Event::LevelStarted {
-                        level,
-                        pieces,
-                        explorations: planned - first,
-                    });
-                }
-            }
-            Ok(Level { results, stopped })
-        };
         // The pool's threads run explorations without barriers, each taking
         // the next index as soon as it is free, at most `window` beyond the
         // first one not yet decided; an executor gets one batch at a time.
         let level_result = match self.executor {
             None => {
+                let batch = self.options.batch.max(1);
                 let window = (AHEAD_PER_THREAD * self.pool.current_num_threads())
                     .clamp(batch, MAX_AHEAD * batch);
-                lookahead::ordered(&self.pool, first, first + n, window, run_one, |t| {
-                    decide(Feed::Pool(t))
-                })?
+                lookahead::ordered(
+                    &self.pool,
+                    run.first,
+                    run.first + run.n,
+                    window,
+                    |i| run.run_one(i),
+                    |t| run.decide(Feed::Pool(t)),
+                )?
             }
-            Some(ex) => decide(Feed::Executor(ex))?,
+            Some(ex) => run.decide(Feed::Executor(ex))?,
         };
         self.observer.on_event(&Event::LevelFinished {
             level,
-            pieces,
+            pieces: level + 1,
             explorations: level_result.results.len(),
             best_mismatch: level_result.best_mismatch(),
             found: level_result.results.iter().any(|(_, s)| s.valid),
@@ -498,5 +339,241 @@ impl<'a> Search<'a> {
         let mut score = cand.evaluate(&self.problem, 0.0, self.options.split_penalty);
         self.judge(&cand, &mut score);
         score.valid.then_some((cand, score))
+    }
+}
+
+/// One level of explorations while it runs: what it explores and its
+/// progress so far. Its steps: [`LevelRun::run_one`] (one exploration, on
+/// a pool thread), [`LevelRun::note`] (its progress event) and
+/// [`LevelRun::decide`] (the batches in index order, the near-miss extra
+/// rounds).
+struct LevelRun<'l, 'a> {
+    search: &'l Search<'a>,
+    round: usize,
+    level: usize,
+    from: From<'l>,
+    /// Explorations per round of the level.
+    n: usize,
+    /// Extra rounds allowed for a near miss.
+    extra_rounds: usize,
+    /// The first exploration index.
+    first: usize,
+    /// Explorations done, and planned (for the progress events).
+    done: AtomicUsize,
+    total: AtomicUsize,
+    /// The best objective and matching cost seen so far.
+    best_seen: Mutex<(f64, u64)>,
+    /// What an executor gets as parents (made once per level, only for
+    /// one), and whether the level is the descent.
+    parents: Vec<Exploration>,
+    descent: bool,
+}
+
+impl<'l, 'a> LevelRun<'l, 'a> {
+    fn new(search: &'l Search<'a>, round: usize, level: usize, from: From<'l>) -> Self {
+        let options = search.options;
+        // The descent is a local step from a dissection: a quarter of a
+        // level's explorations, no extra rounds.
+        let (n, extra_rounds, first) = match from {
+            From::Below(_) => (options.explorations.max(1), options.extra_rounds, 0),
+            From::Lifted(_) => (options.explorations.div_ceil(4).max(1), 0, 0),
+            From::Above(_, first) => (options.explorations.div_ceil(4).max(1), 0, first),
+        };
+        let (parents, descent) = match search.executor {
+            None => (Vec::new(), false),
+            Some(_) => executor_parents(from),
+        };
+        LevelRun {
+            search,
+            round,
+            level,
+            from,
+            n,
+            extra_rounds,
+            first,
+            done: AtomicUsize::new(0),
+            total: AtomicUsize::new(n),
+            best_seen: Mutex::new((f64::INFINITY, u64::MAX)),
+            parents,
+            descent,
+        }
+    }
+
+    /// Notes one exploration's result: the level's progress event.
+    fn note(&self, result: &(Candidate, Score)) {
+        let d = self.done.fetch_add(1, Ordering::Relaxed) + 1;
+        let (bs, bm) = {
+            let mut g = self.best_seen.lock().unwrap_or_else(|e| e.into_inner());
+            g.0 = g.0.min(result.1.value);
+            g.1 = g.1.min(result.1.mismatch);
+            *g
+        };
+        // Explorations run ahead of the deciding batch count too, up to the
+        // level's total.
+        let total = self.total.load(Ordering::Relaxed);
+        self.search.observer.on_event(&Event::Exploration {
+            level: self.level,
+            done: d.min(total),
+            total,
+            best_score: bs,
+            best_mismatch: bm,
+        });
+    }
+
+    /// Exploration `i` of the level (on the solver's pool).
+    fn run_one(&self, i: usize) -> (Candidate, Score) {
+        let s = self.search;
+        let result = match self.from {
+            From::Below(parents) | From::Lifted(parents) => explore::explore_one(
+                &s.problem,
+                s.options,
+                self.round,
+                self.level,
+                i,
+                false,
+                parents.len(),
+                |p| &parents[p].0,
+                s.stop,
+            ),
+            From::Above(parent, _) => explore::explore_one(
+                &s.problem,
+                s.options,
+                self.round,
+                self.level,
+                i,
+                true,
+                1,
+                |_| parent,
+                s.stop,
+            ),
+        };
+        self.note(&result);
+        result
+    }
+
+    /// Explorations `start..end` from `feed`: the pool's, or an executor's
+    /// batch (checked, and noted as the pool's are).
+    fn take(
+        &self,
+        feed: &mut Feed<'_, '_>,
+        start: usize,
+        end: usize,
+    ) -> Result<Vec<(Candidate, Score)>, SolveError> {
+        let ex = match feed {
+            Feed::Pool(taker) => return Ok(taker.take(end - start)),
+            Feed::Executor(ex) => ex,
+        };
+        let batch = Batch {
+            round: self.round,
+            level: self.level,
+            descent: self.descent,
+            indices: start..end,
+            parents: &self.parents,
+        };
+        let got = ex.run(&batch).map_err(ExplorationError::Executor)?;
+        if got.len() != end - start {
+            return Err(ExplorationError::Count {
+                got: got.len(),
+                want: end - start,
+            }
+            .into());
+        }
+        let mut chunk = Vec::with_capacity(got.len());
+        for e in got {
+            e.check(&self.search.problem)?;
+            let result = (e.candidate, e.score);
+            self.note(&result);
+            chunk.push(result);
+        }
+        Ok(chunk)
+    }
+
+    /// Results are decided batch by batch in index order, whoever runs
+    /// them; those past the batch that decides the level are dropped, so
+    /// the answer does not depend on the threads.
+    fn decide(&self, mut feed: Feed<'_, '_>) -> Result<Level, SolveError> {
+        let s = self.search;
+        let options = s.options;
+        let batch = options.batch.max(1);
+        let near_miss = options.near_miss(s.figures.len(), s.figures[0].len());
+        let mut results: Vec<(Candidate, Score)> = Vec::with_capacity(self.n);
+        let mut start = self.first;
+        let mut planned = self.first + self.n;
+        let mut stopped = false;
+        while start < planned {
+            let end = (start + batch).min(planned);
+            let mut chunk = self.take(&mut feed, start, end)?;
+            for (cand, score) in &mut chunk {
+                s.judge(cand, score);
+            }
+            results.extend(chunk);
+            start = end;
+            if s.stopped() {
+                stopped = true;
+                break;
+            }
+            if !options.full_levels && results.iter().any(|(_, s)| s.valid) {
+                break;
+            }
+            let best_mismatch = results
+                .iter()
+                .map(|(_, s)| s.mismatch)
+                .min()
+                .unwrap_or(u64::MAX);
+            if start == planned && self.more_rounds(planned, best_mismatch, near_miss) {
+                planned += self.n;
+                if let Feed::Pool(taker) = &mut feed {
+                    taker.extend_to(planned);
+                }
+                self.total.store(planned - self.first, Ordering::Relaxed);
+                s.observer.on_event(&Event::LevelStarted {
+                    level: self.level,
+                    pieces: self.level + 1,
+                    explorations: planned - self.first,
+                });
+            }
+        }
+        Ok(Level { results, stopped })
+    }
+
+    /// Whether a level that planned explorations up to `planned` and ends
+    /// a near miss (`best_mismatch` at most `near_miss`) gets another
+    /// round of explorations (new streams, same parents) before the next
+    /// level is tried.
+    fn more_rounds(&self, planned: usize, best_mismatch: u64, near_miss: u64) -> bool {
+        planned - self.first < self.n.saturating_mul(1 + self.extra_rounds)
+            && best_mismatch <= near_miss
+    }
+}
+
+/// What an executor gets as the parents of a level from `from`, and
+/// whether the level is the descent.
+fn executor_parents(from: From<'_>) -> (Vec<Exploration>, bool) {
+    match from {
+        From::Below(parents) | From::Lifted(parents) => (
+            parents
+                .iter()
+                .map(|(candidate, score)| Exploration {
+                    candidate: candidate.clone(),
+                    score: *score,
+                })
+                .collect(),
+            false,
+        ),
+        // The descent's parent is a dissection; explorations read only a
+        // parent's labels, never its score.
+        From::Above(parent, _) => (
+            vec![Exploration {
+                candidate: parent.clone(),
+                score: Score {
+                    value: 0.0,
+                    mismatch: 0,
+                    split: 0,
+                    valid: true,
+                    variance: 0.0,
+                },
+            }],
+            true,
+        ),
     }
 }
