@@ -4,7 +4,6 @@
 
 use std::io::Write;
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::Result;
 use clap::Args;
@@ -37,8 +36,6 @@ pub struct DisassembleArgs {
     #[arg(required = true, num_args = 1.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
 }
-
-static STOP: AtomicBool = AtomicBool::new(false);
 
 /// The result line of one figure.
 pub fn line(name: &str, outcome: &Disassembly) -> String {
@@ -86,20 +83,23 @@ pub fn run(args: DisassembleArgs) -> Result<Status> {
         .into());
     }
     let names: Vec<String> = args.figures.iter().map(|p| input::file_name(p)).collect();
-    let _ = ctrlc::set_handler(|| STOP.store(true, Ordering::SeqCst));
     let flat = lattice.lattice().dim() < 3;
-    let outcomes =
-        dissect_engine::disassemble(&dissection, time_limit, Some(&STOP), |f, outcome| {
+    let outcomes = dissect_engine::disassemble(
+        &dissection,
+        time_limit,
+        Some(crate::stop::flag()),
+        |f, outcome| {
             let mut out = std::io::stdout().lock();
             _ = writeln!(out, "{}", line(&names[f], outcome));
             _ = out.flush();
-        })
-        .map_err(|e| match e {
-            DisassemblyError::TooManyPieces { .. } => {
-                anyhow::Error::from(InputError(format!("{}: {e}", args.solution.display())))
-            }
-            other => other.into(),
-        })?;
+        },
+    )
+    .map_err(|e| match e {
+        DisassemblyError::TooManyPieces { .. } => {
+            anyhow::Error::from(InputError(format!("{}: {e}", args.solution.display())))
+        }
+        other => other.into(),
+    })?;
     if flat && !args.quiet {
         eprintln!("note: {lattice} figures are flat: every piece lifts off the table (level 1)");
     }

@@ -6,7 +6,6 @@
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
@@ -59,9 +58,6 @@ fn rank(s: &str) -> Result<Rank, String> {
     s.parse()
         .map_err(|e: dissect_puzzle::scores::UnknownRank| e.to_string())
 }
-
-/// Raised by Ctrl-C.
-static STOP: AtomicBool = AtomicBool::new(false);
 
 /// Progress on stderr: a line rewritten in place on a terminal, a line
 /// every ten seconds otherwise, nothing with `--quiet`.
@@ -132,11 +128,6 @@ pub fn run(args: EnumerateArgs) -> Result<Status> {
         prepare_folder(dir)?;
     }
     let names = crate::prove::names(&args.figures);
-    let _ = ctrlc::set_handler(|| {
-        if STOP.swap(true, Ordering::SeqCst) {
-            std::process::exit(130);
-        }
-    });
     let display = Display {
         quiet: args.quiet,
         terminal: std::io::stderr().is_terminal(),
@@ -150,7 +141,8 @@ pub fn run(args: EnumerateArgs) -> Result<Status> {
         rank: args.rank,
         unique: args.unique,
     };
-    let report = dissect_engine::enumerate(&figures, &names, &config, &STOP, &display);
+    let report =
+        dissect_engine::enumerate(&figures, &names, &config, crate::stop::flag(), &display);
     display.clear();
     let report = match report {
         Ok(r) => r,

@@ -148,7 +148,9 @@ pub fn bound(
             };
         }
         match o.limit {
-            Some(Limit::TooLarge { pieces, bytes }) => report.too_large = Some((pieces, bytes, cap)),
+            Some(Limit::TooLarge { pieces, bytes }) => {
+                report.too_large = Some((pieces, bytes, cap))
+            }
             Some(Limit::Cells { cells }) => report.too_many_cells = Some(cells),
             _ => {}
         }
