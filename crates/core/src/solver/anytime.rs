@@ -94,7 +94,11 @@ pub fn solve_anytime_with(
     if !search.stopped() {
         run.sectors();
     }
-    if !search.stopped() {
+    // Large figures: the constructive step leaves small pieces that the
+    // level search rarely merges; regroup them exactly.
+    let cells = figures[0].len();
+    let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
+    if large && !search.stopped() {
         run.regroup();
     }
     // Large figures: the level search costs about the same per level at
@@ -102,8 +106,6 @@ pub fn solve_anytime_with(
     // again while they are large); the coarse dissection is lifted, refined
     // at full resolution and, when it is a near miss, repaired. The ladder
     // at full resolution is then not run: the coarse search is the ladder.
-    let cells = figures[0].len();
-    let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
     if large && !search.stopped() {
         run.coarse()?;
     }
