@@ -113,7 +113,7 @@ pub(crate) struct Cheap {
 }
 
 /// Figures of more cells get the incompatible-cell bound of
-/// [`extent_clique`] (extreme cells, difference sets) instead of the full
+/// `extent_clique` (extreme cells, difference sets) instead of the full
 /// incompatibility graph, whose cost grows with the square of the cells.
 pub const FULL_GRAPH_MAX_CELLS: usize = 600;
 
