@@ -60,7 +60,12 @@ fn bound_stops_at_its_time_limit_on_big_figures() {
     let took = start.elapsed();
     assert!(took < Duration::from_millis(2500), "took {took:?}");
     assert!(out.status.success());
+    // Over the exact search's size only the cheap bounds run: they end
+    // within the limit (or are stopped by it), never building a SAT model.
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("stopped"), "{text}");
+    assert!(
+        text.contains("stopped") || text.contains("no SAT search: a figure has 9000 cells"),
+        "{text}"
+    );
     assert!(text.contains("lower bound: 2"), "{text}");
 }
