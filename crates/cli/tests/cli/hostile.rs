@@ -491,20 +491,29 @@ fn rect(w: usize, h: usize) -> String {
     format!("{}\n", "#".repeat(w)).repeat(h)
 }
 
-/// `bound` on 100×90 → 90×100 (bounds alone would take minutes): the time
-/// limit and the first Ctrl-C each end it within a second or so, with the
-/// best bound proved so far, under the 2 GiB cap.
+/// `bound` on 100×90 → 90×100 (over the SAT search's size: the cheap
+/// bounds only) ends within its time limit; on 40×15 → 24×25 (600 cells,
+/// where the incompatibility graphs and the encoding estimate take a while)
+/// the first Ctrl-C ends it within a second or so, with the best bound
+/// proved so far, under the 2 GiB cap.
 #[test]
 fn bound_on_big_figures_honours_the_time_limit_and_the_first_ctrl_c() {
     let sb = Sandbox::new();
     let a = sb.write("a.txt", &rect(100, 90));
     let b = sb.write("b.txt", &rect(90, 100));
     let run = sb.run_capped(&["bound", "--time-limit", "2", "-q", &a, &b], LIMIT);
-    run.expect_code(0).stdout_has(&["stopped", "lower bound: "]);
+    run.expect_code(0).stdout_has(&["lower bound: "]);
+    assert!(
+        run.stdout.contains("stopped") || run.stdout.contains("no SAT search"),
+        "{}",
+        run.stdout
+    );
     assert!(run.elapsed < Duration::from_secs(5), "{:?}", run.elapsed);
 
+    let a = sb.write("c.txt", &rect(40, 15));
+    let b = sb.write("d.txt", &rect(24, 25));
     let mut child = spawn_capped(&sb, &["bound", "-q", &a, &b]);
-    std::thread::sleep(Duration::from_millis(1000));
+    std::thread::sleep(Duration::from_millis(400));
     let interrupted = std::time::Instant::now();
     let ok = std::process::Command::new("sh")
         .args(["-c", &format!("kill -INT {}", child.id())])
