@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 from . import _dissect
 
@@ -33,7 +33,7 @@ class Enumeration:
         self.interrupted: bool = result["interrupted"]
         self.seconds: float = result["seconds"]
         #: Every dissection's pieces (``[f][i]`` lists of cells), in the order found.
-        self.dissections: List[List[List[tuple]]] = result["dissections"]
+        self.dissections: List[List[List[Tuple[int, ...]]]] = result["dissections"]
         #: The size of each class, in the order of ``classes``.
         self.class_sizes: List[int] = [c["size"] for c in result["classes"]]
         #: One verified dissection per class.

@@ -2,6 +2,9 @@
 counts them (the counts are those the exact crate's brute-force tests
 check, crates/exact/tests/enumerate.rs)."""
 
+from pathlib import Path
+from typing import List
+
 import pytest
 
 import dissect
@@ -10,7 +13,7 @@ from dissect import Figure
 from conftest import check_with_verify_py
 
 
-def test_counts_classes_and_verified_class_files(tmp_path):
+def test_counts_classes_and_verified_class_files(tmp_path: Path) -> None:
     a = Figure.from_text("###\n###\n", name="rect.txt")
     b = Figure.from_text("######\n", name="bar.txt")
     e = dissect.enumerate([a, b], pieces=3)
@@ -20,7 +23,7 @@ def test_counts_classes_and_verified_class_files(tmp_path):
     assert e.summary() == (
         "7 dissections with 3 pieces (3 up to the first figure's symmetries), complete"
     )
-    files = []
+    files: List[Path] = []
     for f, text in (("rect.txt", "###\n###\n"), ("bar.txt", "######\n")):
         (tmp_path / f).write_text(text)
         files.append(tmp_path / f)
@@ -32,7 +35,7 @@ def test_counts_classes_and_verified_class_files(tmp_path):
     assert len(cuts) == 7
 
 
-def test_minimum_unique_rank_and_stop():
+def test_minimum_unique_rank_and_stop() -> None:
     a = Figure.from_text("####\n" * 4)
     b = Figure.from_text("########\n" * 2)
     m = dissect.enumerate([a, b])
@@ -46,7 +49,7 @@ def test_minimum_unique_rank_and_stop():
     assert not s.complete and s.stopped
 
 
-def test_bad_options_raise():
+def test_bad_options_raise() -> None:
     a = Figure.from_text("###\n###\n")
     b = Figure.from_text("######\n")
     with pytest.raises(dissect.OptionError):
