@@ -353,7 +353,7 @@ fn a_sliver_answer_is_polished_within_the_time_limit() {
     let names = vec!["a".to_string(), "b".to_string()];
     let options = RunOptions::new(RunConfig {
         prove: false,
-        time_limit: TimeLimit::new(8.0).unwrap(),
+        time_limit: TimeLimit::new(16.0).unwrap(),
         ..RunConfig::default()
     })
     .unwrap();
