@@ -292,8 +292,9 @@ impl PyExplorer {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyExplorer> {
         let (figs, _) = problem(py, &figures)?;
-        let opts = run_options(py, seed, 1, None, options, &figs)?.solver_options();
-        let explorer = solver::Explorer::new(&figs, &opts)
+        let opts = run_options(py, seed, 1, None, options, &figs)?;
+        // The problem the run searches (its order of the figures).
+        let explorer = dissect_engine::explorer(&figs, &opts)
             .map_err(|e| error(py, Kind::Problem, e.to_string()))?;
         Ok(PyExplorer { explorer })
     }

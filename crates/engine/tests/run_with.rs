@@ -6,7 +6,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use dissect_core::io::parse_figure;
 use dissect_core::solver::{Batch, Executor, Exploration, Explorer};
 use dissect_core::{Figure, LatticeKind};
-use dissect_engine::{run, run_with, RunConfig, RunOptions};
+use dissect_engine::{explorer, run, run_with, RunConfig, RunOptions};
 
 /// Runs every exploration on an `Explorer` of its own, through bytes.
 struct Remote {
@@ -69,7 +69,7 @@ fn a_foreign_executor_gives_the_same_answer_as_run() {
         let stop = AtomicBool::new(false);
         let local = run(&figures, &names, &options, &stop, &()).expect("a run");
         let remote = Remote {
-            explorer: Explorer::new(&figures, &options.solver_options()).expect("solvable"),
+            explorer: explorer(&figures, &options).expect("solvable"),
             batches: AtomicUsize::new(0),
         };
         let spread =

@@ -13,7 +13,7 @@ mod sides;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
-use dissect_core::solver::{Event, Executor, Repair, SolveError};
+use dissect_core::solver::{Event, Executor, Explorer, Repair, SolveError};
 use dissect_core::{Cell, Figure, LatticeKind};
 use dissect_exact::{ExactError, ExactEvent, ExactOptions, Mode, RepairOptions};
 use dissect_puzzle::constraints::ConstraintError;
@@ -192,7 +192,27 @@ pub fn run_with(
         observer,
         executor,
     )?;
-    Ok(order::restore(report, &order))
+    let mut report = order::restore(report, &order);
+    if let Some(ranking) = &mut report.ranking {
+        // The constraints as given (their figure numbers in input order).
+        ranking.constraints = options.config().constraints.to_json(figures[0].lattice());
+    }
+    Ok(report)
+}
+
+/// The explorer for an executor of [`run_with`] on these figures and
+/// options: it explores the problem the run searches (the figures in the
+/// order the search sees them, `order.rs`), so the executor's explorations
+/// fit the run whatever order the figures are given in.
+pub fn explorer(figures: &[Figure], options: &RunOptions) -> Result<Explorer, EngineError> {
+    check(figures, options)?;
+    let lattice = figures[0].lattice().lattice();
+    let mirror = options.config().mirror && lattice.supports_mirror();
+    let seen: Vec<Figure> = order::canonical_order(figures, mirror)
+        .into_iter()
+        .map(|f| figures[f].clone())
+        .collect();
+    Ok(Explorer::new(&seen, &options.solver_options())?)
 }
 
 /// The name of figure `i`: the one given, else "figure i".
