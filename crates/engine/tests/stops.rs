@@ -97,12 +97,18 @@ fn stopped(
     let raised = observer.raised.lock().unwrap().expect("the phase ran");
     let late = returned - raised;
     eprintln!("{what}: returned {late:?} after the stop");
-    assert!(late < LATE, "{what}: the run returned {late:?} after the stop");
+    assert!(
+        late < LATE,
+        "{what}: the run returned {late:?} after the stop"
+    );
     let best = report.best.as_ref().expect("the best so far");
     let lattice = figures[0].lattice();
     let n = verify_pieces(lattice, true, figures, best.pieces()).expect("verified");
     if let Some(before) = *observer.best.lock().unwrap() {
-        assert!(n <= before, "{what}: {n} pieces, {before} found before the stop");
+        assert!(
+            n <= before,
+            "{what}: {n} pieces, {before} found before the stop"
+        );
     }
     for s in &report.solutions {
         verify_pieces(lattice, true, figures, s.dissection.pieces()).expect("verified");

@@ -107,13 +107,7 @@ fn solution(text: &str, figures: &[Figure], c: &Constraints, rank: Rank) -> bool
         return true;
     }
     let names = vec![String::new(); figures.len()];
-    let Ok(v) = Verified::new(
-        d.lattice(),
-        d.mirror(),
-        names,
-        figures,
-        d.pieces().to_vec(),
-    ) else {
+    let Ok(v) = Verified::new(d.lattice(), d.mirror(), names, figures, d.pieces().to_vec()) else {
         return true;
     };
     let motions = Motions::new(d.lattice(), d.mirror());
@@ -137,7 +131,9 @@ fn search(figures: &[Figure], o: &Options, c: Constraints) {
     let limit = TimeLimit::new(0.01).expect("a time limit");
     let stop = AtomicBool::new(false);
     let names = vec![String::new(); figures.len()];
-    let mirror = o.mirror.unwrap_or(figures[0].lattice().lattice().dim() == 2);
+    let mirror = o
+        .mirror
+        .unwrap_or(figures[0].lattice().lattice().dim() == 2);
     let config = EnumerateConfig {
         mirror,
         pieces: o.pieces,
@@ -202,7 +198,7 @@ pub fn target() -> Target {
             if let Some(s) = parts.next().filter(|s| !s.trim().is_empty()) {
                 accepted = solution(s, &figures, &c, o.rank.unwrap_or_default());
             }
-            if small && figures[0].len() > 0 {
+            if small && !figures[0].is_empty() {
                 search(&figures, &o, c);
             }
             accepted

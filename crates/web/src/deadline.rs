@@ -185,7 +185,9 @@ impl Service<Request<Incoming>> for Deadlined {
 /// (keeping the headers every answer has).
 fn too_late(res: Response<Body>, timeout: Duration) -> Response<Body> {
     let (mut parts, _) = res.into_parts();
-    let body = ApiError::RequestTimeout(message(timeout)).body().to_string();
+    let body = ApiError::RequestTimeout(message(timeout))
+        .body()
+        .to_string();
     parts.status = StatusCode::REQUEST_TIMEOUT;
     parts.headers.remove(header::CONTENT_LENGTH);
     parts.headers.insert(

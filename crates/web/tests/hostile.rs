@@ -412,7 +412,8 @@ async fn a_request_that_does_not_arrive_within_the_request_timeout_gets_408() {
     let long = Duration::from_secs(60);
     let (addr, tx, handle) = start(long, long, Duration::from_secs(2)).await;
     // The head, a byte a second (each byte resets the idle timer).
-    let head = b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\nx-slow: aaaaaaaaaaaaaaaaaaaaaaaaaa\r\n\r\n";
+    let head =
+        b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\nx-slow: aaaaaaaaaaaaaaaaaaaaaaaaaa\r\n\r\n";
     let (answer, took) = trickle(addr, b"", head).await;
     assert!(answer.starts_with("HTTP/1.1 408 "), "{answer}");
     assert!(answer.contains("\"request_timeout\""), "{answer}");
@@ -430,7 +431,10 @@ async fn a_request_that_does_not_arrive_within_the_request_timeout_gets_408() {
     let (answer, took) = trickle(addr, head.as_bytes(), body).await;
     assert!(answer.starts_with("HTTP/1.1 408 "), "{answer}");
     assert!(answer.contains("\"request_timeout\""), "{answer}");
-    assert!(answer.to_ascii_lowercase().contains("connection: close"), "{answer}");
+    assert!(
+        answer.to_ascii_lowercase().contains("connection: close"),
+        "{answer}"
+    );
     assert!(answer.contains("content-security-policy"), "{answer}");
     assert!(took < Duration::from_secs(4), "{took:?}");
     // Requests that arrive in time are served, twice on one connection,
@@ -456,7 +460,8 @@ async fn a_request_that_does_not_arrive_within_the_request_timeout_gets_408() {
 async fn slow_clients_do_not_hold_the_server() {
     let long = Duration::from_secs(60);
     let (addr, tx, handle) = start(long, long, Duration::from_secs(2)).await;
-    let head = b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\nx-slow: aaaaaaaaaaaaaaaaaaaaaaaaaa\r\n\r\n";
+    let head =
+        b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\nx-slow: aaaaaaaaaaaaaaaaaaaaaaaaaa\r\n\r\n";
     let slow: Vec<_> = (0..20)
         .map(|_| tokio::spawn(async move { trickle(addr, b"", head).await }))
         .collect();
