@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A short bounded fuzz run (issue 17) over every parser: figure text,
-# solution JSON, pictures (PNG, JPEG, SVG), STL meshes and the HTTP API,
+# solution JSON, the puzzle fields and the engine commands' inputs (issue
+# 27), pictures (PNG, JPEG, SVG), STL meshes and the HTTP API,
 # under a 2 GiB address-space cap, 30 s in all. A panic fails the step (the
 # inputs are saved under target/fuzz-failures/); an abort or a stack
 # overflow ends the process and fails it too. The long runs and their

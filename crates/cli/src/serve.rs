@@ -40,9 +40,22 @@ pub struct ServeArgs {
     /// other than loopback makes up a random token and prints it in its URL.
     #[arg(long, value_name = "TOKEN")]
     pub token: Option<String>,
+    /// How long a request's head and body may take to arrive, from its
+    /// first byte; a later one gets HTTP 408 and its connection is closed.
+    #[arg(long, default_value_t = 30.0, value_name = "SECS", value_parser = request_timeout)]
+    pub request_timeout: f64,
     /// Worker threads per solve (default: one per core).
     #[arg(long, default_value_t = 0, value_parser = crate::args::thread_count)]
     pub threads: usize,
+}
+
+/// A request timeout: more than 0 seconds, at most a day.
+fn request_timeout(s: &str) -> Result<f64, String> {
+    let v = positive(s)?;
+    if v > 86_400.0 {
+        return Err(format!("must be at most 86400 seconds (a day), got {s}"));
+    }
+    Ok(v)
 }
 
 pub fn run(args: ServeArgs) -> Result<Status> {
@@ -73,7 +86,8 @@ pub fn run(args: ServeArgs) -> Result<Status> {
         Some(t) => Access::with_token(t).map_err(|e| InputError(format!("--token: {e}")))?,
         None => Access::open(),
     };
-    dissect_web::run_blocking(addr, limits, access, |bound| {
+    let request_timeout = std::time::Duration::from_secs_f64(args.request_timeout);
+    dissect_web::run_blocking(addr, limits, access, request_timeout, |bound| {
         // The one line scripts read: where the studio is. Nothing is opened.
         match &token {
             Some(t) => println!("http://{bound}/?token={t}"),

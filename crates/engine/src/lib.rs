@@ -66,6 +66,7 @@ pub use options::{
 pub use repair::ExactRepair;
 pub use report::{End, Improvement, LowerBound, Ranking, Report, Solution, Source};
 pub use run::{
-    check, explorer, run, run_with, EngineError, EngineEvent, EngineObserver, SLIVER_CELLS,
+    check, explorer, run, run_with, EngineError, EngineEvent, EngineObserver, Phase,
+    SLIVER_CELLS,
 };
 pub use verified::Verified;

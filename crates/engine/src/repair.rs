@@ -10,7 +10,7 @@ use dissect_core::{Cell, Figure};
 use dissect_exact::{repair, search, ExactOptions, Mode, RepairOptions};
 use dissect_puzzle::Constraints;
 
-use crate::run::SLIVER_CELLS;
+use crate::run::{EngineEvent, EngineObserver, Phase, SLIVER_CELLS};
 
 /// SAT conflicts for one exact dissection of small figures (each of its
 /// two searches), so that it ends the same way on every machine.
@@ -45,6 +45,8 @@ pub struct ExactRepair<'a> {
     spent: AtomicU64,
     /// Conflicts spent so far by [`Repair::regroup`].
     regrouped: AtomicU64,
+    /// Hears [`EngineEvent::Phase`] at each call.
+    observer: Option<&'a dyn EngineObserver>,
 }
 
 impl<'a> ExactRepair<'a> {
@@ -55,12 +57,27 @@ impl<'a> ExactRepair<'a> {
             options,
             spent: AtomicU64::new(0),
             regrouped: AtomicU64::new(0),
+            observer: None,
+        }
+    }
+
+    /// The same repairer, telling `observer` of each call
+    /// ([`EngineEvent::Phase`]: repair, sectors, regroup).
+    pub fn with_observer(mut self, observer: &'a dyn EngineObserver) -> ExactRepair<'a> {
+        self.observer = Some(observer);
+        self
+    }
+
+    fn phase(&self, phase: Phase) {
+        if let Some(o) = self.observer {
+            o.on_event(&EngineEvent::Phase(phase));
         }
     }
 }
 
 impl Repair for ExactRepair<'_> {
     fn repair(&self, pieces: &[Vec<Vec<Cell>>], stop: &AtomicBool) -> Option<Vec<Vec<Vec<Cell>>>> {
+        self.phase(Phase::Repair);
         // An error is a candidate the repair cannot take (or a bug it
         // reports); the search goes on without it.
         repair(self.figures, pieces, &self.options, stop)
@@ -78,6 +95,7 @@ impl Repair for ExactRepair<'_> {
         max_pieces: usize,
         stop: &AtomicBool,
     ) -> Option<Vec<Vec<Vec<Cell>>>> {
+        self.phase(Phase::Sectors);
         let figures = self.small_figures(figures)?;
         let budget = Budget {
             spent: &self.spent,
@@ -105,6 +123,7 @@ impl Repair for ExactRepair<'_> {
         max_pieces: usize,
         stop: &AtomicBool,
     ) -> Option<Vec<Vec<Vec<Cell>>>> {
+        self.phase(Phase::Regroup);
         let figures = self.small_figures(figures)?;
         let budget = Budget {
             spent: &self.regrouped,

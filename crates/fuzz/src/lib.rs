@@ -6,17 +6,21 @@
 //!
 //! Targets: `figure` (figure text on every lattice, then the figure's
 //! statistics), `solution` (solution JSON, then the independent verifier and
-//! the drawing of a checked scene), `picture` (PNG, JPEG and SVG
+//! the drawing of a checked scene), `puzzle` (the puzzle fields and the
+//! inputs of `solve`'s constraints, `assemblies`, `disassemble` and
+//! `enumerate`: see the module), `picture` (PNG, JPEG and SVG
 //! rasterized to a few cells), `mesh` (STL voxelized), `http` (requests to
 //! the studio's router: method, path, headers and body).
 //!
 //! Everything is reproducible from the seed: the generator is SplitMix64.
 
+mod puzzle;
+
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::{Duration, Instant};
 
 /// The targets, in the order a run visits them.
-pub const TARGETS: &[&str] = &["figure", "solution", "picture", "mesh", "http"];
+pub const TARGETS: &[&str] = &["figure", "solution", "puzzle", "picture", "mesh", "http"];
 
 /// SplitMix64: small, fast and reproducible.
 #[derive(Clone, Debug)]
@@ -86,6 +90,29 @@ const DICTIONARY: &[&str] = &[
     "\"figures\"",
     "\"pieces\"",
     "\"mirror\"",
+    "\n--\n",
+    "rank=",
+    "rank=level",
+    "pieces=",
+    "min=",
+    "max=",
+    "keep=",
+    "solutions=",
+    "checkerboard=1",
+    "sym=",
+    "aa",
+    "\"constraints\"",
+    "\"keep\"",
+    "\"min_piece\"",
+    "\"max_piece\"",
+    "\"solutions\"",
+    "\"rank\"",
+    "\"ranking\"",
+    "\"regions\"",
+    "\"text\"",
+    "\"level\"",
+    "\"checkerboard\"",
+    "\"symmetry_weight\"",
     "<g>",
     "</g>",
     "<svg",
@@ -215,6 +242,7 @@ impl Target {
         Some(match name {
             "figure" => targets::figure(),
             "solution" => targets::solution(),
+            "puzzle" => puzzle::target(),
             "picture" => targets::picture(),
             "mesh" => targets::mesh(),
             "http" => targets::http(),
@@ -464,6 +492,8 @@ mod targets {
             "POST /api/export/svg application/json\n{\"solution\": {\"format\": \"dissection-solution/1\", \"lattice\": \"square\", \"figures\": [{\"pieces\": [[[0,0]],[[1,0]]]}, {\"pieces\": [[[0,0]],[[0,1]]]}]}}",
             "POST /api/export/stl application/json\n{\"solution\": {\"format\": \"dissection-solution/1\", \"lattice\": \"square\", \"figures\": [{\"pieces\": [[[0,0]],[[1,0]]]}, {\"pieces\": [[[0,0]],[[0,1]]]}]}, \"thickness_mm\": 2}",
             "POST /api/rasterize?lattice=square&cells=4 image/svg+xml\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"4\" height=\"4\"><rect width=\"2\" height=\"2\"/></svg>",
+            "POST /api/solve application/json\n{\"lattice\": \"square\", \"time_limit\": 0.05, \"figures\": [{\"text\": \"##\\n##\"}, {\"text\": \"####\"}], \"solutions\": 2, \"rank\": \"level\", \"keep\": [{\"figure\": 1, \"regions\": {\"a\": [[0,0],[1,0]]}}], \"min_piece\": 1, \"max_piece\": 3, \"checkerboard\": true, \"symmetry_weight\": 0.5}",
+            "POST /api/solve application/json\n{\"lattice\": \"square\", \"time_limit\": 0.05, \"figures\": [{\"text\": \"##\\n##\"}, {\"text\": \"####\"}], \"solutions\": 3, \"rank\": \"unique\", \"keep\": [{\"figure\": 2, \"text\": \"aa..\"}]}",
             "GET /api/solve/1 \n",
             "GET /api/info \n",
             "POST /api/solve/1/stop \n",

@@ -4,6 +4,7 @@
 //! ranked.
 
 use std::collections::HashSet;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use dissect_core::lattice::Point;
@@ -110,14 +111,15 @@ impl Collection {
     }
 
     /// The best `limit` by `rank`, best first. With [`Rank::Unique`] the
-    /// assemblies are counted first, in every figure (each count gets
-    /// `count_time`; a count cut short ranks last).
+    /// assemblies are counted first, in every figure (each count within
+    /// `count_time`; a count cut short ranks last, and once its stop is
+    /// raised or its deadline has passed no more are counted).
     pub fn ranked(
         mut self,
         rank: Rank,
         limit: usize,
         figures: &[Figure],
-        count_time: Duration,
+        count_time: CountTime<'_>,
     ) -> Vec<Entry> {
         if rank.needs_assemblies() {
             for e in &mut self.entries {
@@ -157,14 +159,45 @@ pub fn levels(motions: &Motions, pieces: &[Vec<Vec<Cell>>]) -> Vec<Option<usize>
         .collect()
 }
 
+/// How long the counts of assemblies may take.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CountTime<'a> {
+    /// Each count (one figure of one dissection).
+    pub each: Duration,
+    /// No count goes past this instant.
+    pub until: Option<Instant>,
+    /// Raised to stop every count at once.
+    pub stop: Option<&'a AtomicBool>,
+}
+
+impl CountTime<'_> {
+    /// The deadline of a count that starts now.
+    fn deadline(&self) -> Option<Instant> {
+        let each = Instant::now().checked_add(self.each);
+        match (each, self.until) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
+    /// Whether the counts are to stop.
+    fn over(&self) -> bool {
+        self.stop.is_some_and(|s| s.load(Ordering::SeqCst))
+            || self.until.is_some_and(|u| Instant::now() >= u)
+    }
+}
+
 /// The tilings up to symmetry of every figure by a dissection's pieces,
-/// summed; `None` when a count did not finish in `time`.
+/// summed; `None` when a count did not finish in its time (or was stopped).
 pub fn assemblies(
     motions: &Motions,
     pieces: &[Vec<Vec<Cell>>],
     figures: &[Figure],
-    time: Duration,
+    time: CountTime<'_>,
 ) -> Option<u64> {
+    if time.over() {
+        return None;
+    }
     let set = PieceSet::new(motions.clone(), pieces.first()?).ok()?;
     let mut total = 0;
     for f in figures {
@@ -172,7 +205,8 @@ pub fn assemblies(
             &set,
             f,
             CountLimits {
-                deadline: Instant::now().checked_add(time),
+                deadline: time.deadline(),
+                stop: time.stop,
                 ..CountLimits::default()
             },
         )

@@ -75,6 +75,10 @@ pub enum ApiError {
     /// Occurs when a route exists but not for this HTTP method.
     #[error("method not allowed here")]
     MethodNotAllowed,
+    /// Occurs when a request's head and body did not arrive within the
+    /// server's request timeout (`--request-timeout`).
+    #[error("{0}")]
+    RequestTimeout(String),
     /// Occurs on a failure that is the server's own fault.
     #[error("internal error: {0}")]
     Internal(String),
@@ -107,6 +111,7 @@ impl ApiError {
             ApiError::MethodNotAllowed => StatusCode::METHOD_NOT_ALLOWED,
             ApiError::Forbidden(_) => StatusCode::FORBIDDEN,
             ApiError::UnsupportedMediaType(_) => StatusCode::UNSUPPORTED_MEDIA_TYPE,
+            ApiError::RequestTimeout(_) => StatusCode::REQUEST_TIMEOUT,
             ApiError::Internal(_) => StatusCode::INTERNAL_SERVER_ERROR,
         }
     }
@@ -129,6 +134,7 @@ impl ApiError {
             ApiError::MethodNotAllowed => "method_not_allowed",
             ApiError::Forbidden(_) => "forbidden",
             ApiError::UnsupportedMediaType(_) => "unsupported_media_type",
+            ApiError::RequestTimeout(_) => "request_timeout",
             ApiError::Internal(_) => "internal",
         }
     }

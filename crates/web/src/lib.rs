@@ -18,6 +18,7 @@ pub mod puzzle;
 pub mod security;
 
 mod assets;
+mod deadline;
 mod examples;
 mod idle;
 mod lattices;
@@ -49,8 +50,13 @@ pub enum ServeError {
     Io(#[from] std::io::Error),
 }
 
-/// How long a client may take to send a request's headers.
+/// How long a connection may go without starting a request: after it opens,
+/// and after each answer (keep-alive).
 pub const HEADER_TIMEOUT: Duration = Duration::from_secs(10);
+/// How long a request's head and body may take to arrive, from its first
+/// byte (`dissect serve --request-timeout`): later, the answer is 408 and
+/// the connection is closed.
+pub const REQUEST_TIMEOUT: Duration = Duration::from_secs(30);
 /// How long a connection may stay without any byte read or written.
 pub const IDLE_TIMEOUT: Duration = Duration::from_secs(60);
 /// How long open connections get to finish once the server stops.
@@ -65,6 +71,7 @@ pub struct Server {
     access: Access,
     header_timeout: Duration,
     idle_timeout: Duration,
+    request_timeout: Duration,
 }
 
 impl Server {
@@ -80,6 +87,7 @@ impl Server {
             access: Access::open(),
             header_timeout: HEADER_TIMEOUT,
             idle_timeout: IDLE_TIMEOUT,
+            request_timeout: REQUEST_TIMEOUT,
         })
     }
 
@@ -89,11 +97,20 @@ impl Server {
         self
     }
 
-    /// The same server with other timeouts: for headers and for idle
-    /// connections (defaults [`HEADER_TIMEOUT`], [`IDLE_TIMEOUT`]).
+    /// The same server with other timeouts: for a connection to start a
+    /// request and for idle connections (defaults [`HEADER_TIMEOUT`],
+    /// [`IDLE_TIMEOUT`]).
     pub fn with_timeouts(mut self, header: Duration, idle: Duration) -> Server {
         self.header_timeout = header;
         self.idle_timeout = idle;
+        self
+    }
+
+    /// The same server with another request timeout (default
+    /// [`REQUEST_TIMEOUT`]): a request whose head and body have not arrived
+    /// within it of its first byte gets 408 and its connection is closed.
+    pub fn with_request_timeout(mut self, timeout: Duration) -> Server {
+        self.request_timeout = timeout;
         self
     }
 
@@ -106,8 +123,9 @@ impl Server {
     /// and open connections get [`SHUTDOWN_GRACE`] to finish before they are
     /// dropped, so that no client (one holding a half-sent request, an
     /// event stream) can keep the server from stopping. Every connection
-    /// must send its headers within [`HEADER_TIMEOUT`] and is closed after
-    /// [`IDLE_TIMEOUT`] without traffic.
+    /// must start a request within [`HEADER_TIMEOUT`] (of opening, of its
+    /// last answer), send it whole within the request timeout (else 408),
+    /// and is closed after [`IDLE_TIMEOUT`] without traffic.
     pub async fn run(
         self,
         shutdown: impl std::future::Future<Output = ()> + Send + 'static,
@@ -117,7 +135,11 @@ impl Server {
         let (close_tx, close_rx) = tokio::sync::watch::channel(false);
         let mut conns = tokio::task::JoinSet::new();
         let mut shutdown = std::pin::pin!(shutdown);
-        let (header_timeout, idle_timeout) = (self.header_timeout, self.idle_timeout);
+        let timeouts = idle::Timeouts {
+            idle: self.idle_timeout,
+            between: self.header_timeout,
+            request: self.request_timeout,
+        };
         loop {
             tokio::select! {
                 () = &mut shutdown => break,
@@ -134,13 +156,15 @@ impl Server {
                     if conns.len() >= MAX_CONNECTIONS {
                         continue;
                     }
-                    let service = hyper_util::service::TowerToHyperService::new(app.clone());
+                    let clock = deadline::Clock::new();
+                    let service = deadline::Deadlined::new(app.clone(), clock.clone(), timeouts.request);
                     let mut closing = close_rx.clone();
                     conns.spawn(async move {
-                        let io = hyper_util::rt::TokioIo::new(idle::IdleTimeout::new(stream, idle_timeout));
+                        let io = hyper_util::rt::TokioIo::new(idle::IdleTimeout::new(stream, timeouts, clock));
+                        // The head's deadline is the request clock's (408), not hyper's.
                         let conn = hyper::server::conn::http1::Builder::new()
                             .timer(hyper_util::rt::TokioTimer::new())
-                            .header_read_timeout(header_timeout)
+                            .header_read_timeout(None)
                             .serve_connection(io, service);
                         let mut conn = std::pin::pin!(conn);
                         tokio::select! {
@@ -169,7 +193,8 @@ impl Server {
 }
 
 /// Runs a studio server on its own tokio runtime until Ctrl-C (or SIGTERM):
-/// binds `addr`, calls `ready` with the bound address, then serves. The
+/// binds `addr`, calls `ready` with the bound address, then serves, with
+/// `request_timeout` for each request ([`Server::with_request_timeout`]). The
 /// server stops within seconds of the signal, whatever its clients do.
 ///
 /// This is what `dissect serve` calls, so the command line needs no async
@@ -178,6 +203,7 @@ pub fn run_blocking(
     addr: SocketAddr,
     limits: Limits,
     access: Access,
+    request_timeout: Duration,
     ready: impl FnOnce(SocketAddr),
 ) -> Result<(), ServeError> {
     let runtime = tokio::runtime::Builder::new_multi_thread()
@@ -187,7 +213,10 @@ pub fn run_blocking(
         .enable_all()
         .build()?;
     let result = runtime.block_on(async move {
-        let server = Server::bind(addr, limits).await?.with_access(access);
+        let server = Server::bind(addr, limits)
+            .await?
+            .with_access(access)
+            .with_request_timeout(request_timeout);
         ready(server.local_addr()?);
         server.run(shutdown_signal()).await
     });

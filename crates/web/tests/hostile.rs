@@ -289,6 +289,7 @@ async fn with_a_token_every_request_needs_it() {
 async fn start(
     header: Duration,
     idle: Duration,
+    request: Duration,
 ) -> (
     std::net::SocketAddr,
     tokio::sync::oneshot::Sender<()>,
@@ -300,7 +301,8 @@ async fn start(
     )
     .await
     .unwrap()
-    .with_timeouts(header, idle);
+    .with_timeouts(header, idle)
+    .with_request_timeout(request);
     let addr = server.local_addr().unwrap();
     let (tx, rx) = tokio::sync::oneshot::channel::<()>();
     let handle = tokio::spawn(server.run(async {
@@ -322,7 +324,12 @@ async fn closed_after(s: &mut tokio::net::TcpStream, within: Duration) -> Durati
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn slow_and_idle_clients_are_cut_off() {
-    let (addr, tx, handle) = start(Duration::from_millis(500), Duration::from_secs(1)).await;
+    let (addr, tx, handle) = start(
+        Duration::from_millis(500),
+        Duration::from_secs(1),
+        Duration::from_millis(500),
+    )
+    .await;
     // Half a request, then nothing.
     let mut half = tokio::net::TcpStream::connect(addr).await.unwrap();
     half.write_all(b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\n")
@@ -345,7 +352,8 @@ async fn slow_and_idle_clients_are_cut_off() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn shutdown_is_quick_whatever_clients_do() {
     // Long timeouts: only the shutdown may end these connections.
-    let (addr, tx, handle) = start(Duration::from_secs(600), Duration::from_secs(600)).await;
+    let long = Duration::from_secs(600);
+    let (addr, tx, handle) = start(long, long, long).await;
     let mut half = tokio::net::TcpStream::connect(addr).await.unwrap();
     half.write_all(b"POST /api/figures HTTP/1.1\r\nhost: 127.0.0.1\r\ncontent-type: application/json\r\ncontent-length: 1000\r\n\r\n{\"lat").await.unwrap();
     let mut headers = tokio::net::TcpStream::connect(addr).await.unwrap();
@@ -364,4 +372,118 @@ async fn shutdown_is_quick_whatever_clients_do() {
     assert!(t.elapsed() < Duration::from_secs(5), "{:?}", t.elapsed());
     // And nobody is listening any more.
     assert!(tokio::net::TcpStream::connect(addr).await.is_err());
+}
+
+/// Sends `bytes` one a second on a fresh connection to `addr` while reading
+/// the answer: the answer, and when the server closed the connection after
+/// the first byte.
+async fn trickle(addr: std::net::SocketAddr, head: &[u8], bytes: &[u8]) -> (String, Duration) {
+    let stream = tokio::net::TcpStream::connect(addr).await.unwrap();
+    let (mut r, mut w) = stream.into_split();
+    w.write_all(head).await.unwrap();
+    let t = Instant::now();
+    let bytes = bytes.to_vec();
+    let writer = tokio::spawn(async move {
+        for b in bytes {
+            if w.write_all(&[b]).await.is_err() {
+                break;
+            }
+            tokio::time::sleep(Duration::from_secs(1)).await;
+        }
+        w
+    });
+    let mut answer = Vec::new();
+    let mut buf = [0u8; 4096];
+    loop {
+        match tokio::time::timeout(Duration::from_secs(20), r.read(&mut buf)).await {
+            Ok(Ok(0)) | Ok(Err(_)) => break,
+            Ok(Ok(n)) => answer.extend_from_slice(&buf[..n]),
+            Err(_) => panic!("the server kept a slow client for 20 s"),
+        }
+    }
+    let took = t.elapsed();
+    writer.abort();
+    (String::from_utf8_lossy(&answer).into_owned(), took)
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_request_that_does_not_arrive_within_the_request_timeout_gets_408() {
+    // Short waits elsewhere would hide the request timeout: 60 s for them.
+    let long = Duration::from_secs(60);
+    let (addr, tx, handle) = start(long, long, Duration::from_secs(2)).await;
+    // The head, a byte a second (each byte resets the idle timer).
+    let head =
+        b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\nx-slow: aaaaaaaaaaaaaaaaaaaaaaaaaa\r\n\r\n";
+    let (answer, took) = trickle(addr, b"", head).await;
+    assert!(answer.starts_with("HTTP/1.1 408 "), "{answer}");
+    assert!(answer.contains("\"request_timeout\""), "{answer}");
+    assert!(answer.contains("content-security-policy"), "{answer}");
+    assert!(
+        took >= Duration::from_millis(1500) && took < Duration::from_secs(4),
+        "{took:?}"
+    );
+    // The head at once, the body a byte a second.
+    let body = br###"{"lattice": "square", "figures": [{"text": "##"}]}"###;
+    let head = format!(
+        "POST /api/figures HTTP/1.1\r\nhost: 127.0.0.1\r\ncontent-type: application/json\r\ncontent-length: {}\r\n\r\n",
+        body.len()
+    );
+    let (answer, took) = trickle(addr, head.as_bytes(), body).await;
+    assert!(answer.starts_with("HTTP/1.1 408 "), "{answer}");
+    assert!(answer.contains("\"request_timeout\""), "{answer}");
+    assert!(
+        answer.to_ascii_lowercase().contains("connection: close"),
+        "{answer}"
+    );
+    assert!(answer.contains("content-security-policy"), "{answer}");
+    assert!(took < Duration::from_secs(4), "{took:?}");
+    // Requests that arrive in time are served, twice on one connection,
+    // even with a pause longer than the request timeout between them.
+    let mut s = tokio::net::TcpStream::connect(addr).await.unwrap();
+    let post = format!("{head}{}", String::from_utf8_lossy(body));
+    for _ in 0..2 {
+        s.write_all(post.as_bytes()).await.unwrap();
+        let mut buf = vec![0u8; 1 << 16];
+        let n = tokio::time::timeout(Duration::from_secs(10), s.read(&mut buf))
+            .await
+            .unwrap()
+            .unwrap();
+        let answer = String::from_utf8_lossy(&buf[..n]);
+        assert!(answer.starts_with("HTTP/1.1 200 "), "{answer}");
+        tokio::time::sleep(Duration::from_millis(2500)).await;
+    }
+    let _ = tx.send(());
+    handle.await.unwrap().unwrap();
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn slow_clients_do_not_hold_the_server() {
+    let long = Duration::from_secs(60);
+    let (addr, tx, handle) = start(long, long, Duration::from_secs(2)).await;
+    let head =
+        b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\nx-slow: aaaaaaaaaaaaaaaaaaaaaaaaaa\r\n\r\n";
+    let slow: Vec<_> = (0..20)
+        .map(|_| tokio::spawn(async move { trickle(addr, b"", head).await }))
+        .collect();
+    tokio::time::sleep(Duration::from_millis(300)).await;
+    // Meanwhile a quick request is answered at once.
+    let t = Instant::now();
+    let mut s = tokio::net::TcpStream::connect(addr).await.unwrap();
+    s.write_all(b"GET /api/info HTTP/1.1\r\nhost: 127.0.0.1\r\nconnection: close\r\n\r\n")
+        .await
+        .unwrap();
+    let mut answer = Vec::new();
+    tokio::time::timeout(Duration::from_secs(5), s.read_to_end(&mut answer))
+        .await
+        .unwrap()
+        .unwrap();
+    assert!(answer.starts_with(b"HTTP/1.1 200 "));
+    assert!(t.elapsed() < Duration::from_secs(1), "{:?}", t.elapsed());
+    for h in slow {
+        let (answer, took) = h.await.unwrap();
+        assert!(answer.starts_with("HTTP/1.1 408 "), "{answer}");
+        assert!(took < Duration::from_secs(4), "{took:?}");
+    }
+    let _ = tx.send(());
+    handle.await.unwrap().unwrap();
 }

@@ -223,6 +223,19 @@ fn negative_numbers_are_told_their_range() {
         &["serve", "--port", "70000"],
         &["port from 0 to 65535"],
     );
+    for (t, says) in [
+        ("0", "must be more than 0"),
+        ("-1", "must be more than 0"),
+        ("nan", "must be a finite number"),
+        ("inf", "must be a finite number"),
+        ("1e300", "must be at most 86400"),
+    ] {
+        refused(
+            &sb,
+            &["serve", "--request-timeout", t],
+            &["--request-timeout", says],
+        );
+    }
 }
 
 #[test]

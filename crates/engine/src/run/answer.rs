@@ -1,11 +1,14 @@
 //! The answer of a run: both sides' dissections verified, the better one
 //! chosen, a puzzle run's collection ranked and checked, and the report.
 
+use std::sync::atomic::AtomicBool;
+
 use dissect_core::Cell;
+use dissect_puzzle::collect::CountTime;
 
 use super::shared::Shared;
 use super::sides::Sides;
-use super::{EngineError, Plan, COUNT_TIME};
+use super::{EngineError, Plan, COUNT_GRACE, COUNT_TIME};
 use crate::report::{End, Ranking, Report, Solution, Source};
 use crate::verified::Verified;
 
@@ -17,12 +20,13 @@ type Best = (Verified, Source, Option<usize>);
 pub(super) fn answer(
     plan: &Plan<'_>,
     shared: &Shared<'_>,
+    stop: &AtomicBool,
     sides: Sides,
 ) -> Result<Report, EngineError> {
     let mut best = best(plan, shared, &sides)?;
     let (solutions, ranking) = match &shared.judge {
         Some(_) => {
-            let solutions = ranked(plan, shared, &sides, best.as_ref())?;
+            let solutions = ranked(plan, shared, stop, &sides, best.as_ref())?;
             // The best is the first by the ranking.
             best = solutions.first().map(|s| {
                 let level = best
@@ -85,6 +89,7 @@ fn best(plan: &Plan<'_>, shared: &Shared<'_>, sides: &Sides) -> Result<Option<Be
 fn ranked(
     plan: &Plan<'_>,
     shared: &Shared<'_>,
+    stop: &AtomicBool,
     sides: &Sides,
     best: Option<&Best>,
 ) -> Result<Vec<Solution>, EngineError> {
@@ -110,7 +115,17 @@ fn ranked(
         .filter(|b| b.1 != Source::Sat)
         .map_or(Source::Search, |b| b.1);
     let mut solutions = Vec::new();
-    for e in collection.ranked(config.rank, plan.wanted(), plan.figures, COUNT_TIME) {
+    shared
+        .observer
+        .on_event(&super::EngineEvent::Phase(super::Phase::Ranking));
+    // The counts of `--rank unique` end at the stop, or just after the
+    // time limit.
+    let count_time = CountTime {
+        each: COUNT_TIME,
+        until: plan.deadline.map(|d| d + COUNT_GRACE),
+        stop: Some(stop),
+    };
+    for e in collection.ranked(config.rank, plan.wanted(), plan.figures, count_time) {
         let broken = config.constraints.check(&plan.motions, &e.pieces);
         if let Some(v) = broken.first() {
             return Err(EngineError::Unverified(

@@ -62,6 +62,10 @@ const MAX_COLLECTED: usize = 4096;
 /// How long `--rank unique` may count the assemblies of one figure.
 pub const COUNT_TIME: Duration = Duration::from_secs(5);
 
+/// How long past a time limit the counts of `--rank unique` may go on in
+/// all (the run ends within a second of its limit).
+pub const COUNT_GRACE: Duration = Duration::from_millis(500);
+
 /// Live news of a run.
 #[derive(Debug)]
 #[non_exhaustive]
@@ -74,6 +78,9 @@ pub enum EngineEvent<'a> {
     Improved(Improvement),
     /// The lower bound rose.
     LowerBound(&'a LowerBound),
+    /// A phase of the run started (or, for the exact repair, the sectors
+    /// and the regrouping, was called once more).
+    Phase(Phase),
     /// A puzzle run kept a new different dissection with the fewest pieces.
     Collected {
         /// Its piece count (the fewest so far).
@@ -83,6 +90,23 @@ pub enum EngineEvent<'a> {
         /// Seconds from the start of the run.
         seconds: f64,
     },
+}
+
+/// A phase of a run, as [`EngineEvent::Phase`] names it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Phase {
+    /// The exact repair of one of the heuristic's near misses.
+    Repair,
+    /// The exact dissection of one sector (small figures) of a large one.
+    Sectors,
+    /// The exact search that cuts a few pieces of the best answer again.
+    Regroup,
+    /// The polish of an answer with a sliver.
+    Polish,
+    /// The ranking of several solutions (their assemblies counted with
+    /// `--rank unique`).
+    Ranking,
 }
 
 /// Receives [`EngineEvent`]s (from worker threads).
@@ -246,11 +270,12 @@ fn run_in_order(
             budget: REPAIR_BUDGET,
             ..RepairOptions::default()
         },
-    );
+    )
+    .with_observer(observer);
     let repairer = plan.config().repair.then_some(&exact_repair as &dyn Repair);
     let mut sides = sides::search(&plan, &shared, stop, repairer, executor)?;
     polish::polish(&plan, &shared, stop, &mut sides, repairer, executor)?;
-    answer::answer(&plan, &shared, sides)
+    answer::answer(&plan, &shared, stop, sides)
 }
 
 /// What a run does, fixed before it starts.

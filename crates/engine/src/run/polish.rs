@@ -28,6 +28,9 @@ pub(super) fn polish(
     let Some(count) = sliver_count(plan, shared, stop, sides) else {
         return Ok(());
     };
+    shared
+        .observer
+        .on_event(&super::EngineEvent::Phase(super::Phase::Polish));
     let options = Options {
         max_pieces: Some(count),
         ..plan.options.solver_options()
