@@ -29,10 +29,15 @@ struct Display {
     start: Instant,
     progress: Progress,
     exact: Option<crate::prove::Lines>,
+    /// Writes the certificates (`--certificate`).
+    certificates: Option<crate::certificate::Writer>,
 }
 
 impl EngineObserver for Display {
     fn on_event(&self, event: &EngineEvent<'_>) {
+        if let (EngineEvent::Exact(e), Some(w)) = (event, &self.certificates) {
+            w.on_event(e);
+        }
         if self.quiet {
             return;
         }
@@ -99,10 +104,29 @@ pub fn run(args: SolveArgs) -> Result<Status> {
             quiet: args.quiet,
             start,
             names: names.clone(),
+            certificates: None,
         }),
+        certificates: match &args.certificate {
+            Some(dir) => Some(crate::certificate::Writer::new(
+                dir,
+                &args.figures,
+                &args.lattice.to_string(),
+                !args.no_mirror,
+            )?),
+            None => None,
+        },
     };
     let report = dissect_engine::run(&figures, &names, &options, stop, &display);
     display.progress.finish();
+    // The certificates' line on stderr (stdout's last line stays the verdict).
+    let certificates = match display.certificates.as_ref().map(|w| w.summary()) {
+        Some(Ok(line)) => {
+            progress::stderr_line(&line);
+            Ok(())
+        }
+        Some(Err(e)) => Err(e),
+        None => Ok(()),
+    };
     let report = match report {
         Ok(r) => r,
         Err(e @ EngineError::Figures(_)) => return Err(InputError(e.to_string()).into()),
@@ -131,6 +155,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
             report.lower_bound.value,
             report.lower_bound.reason,
         ));
+        certificates?;
         return Ok(Status::NotFound);
     };
 
@@ -206,6 +231,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     }
     written?;
     others?;
+    certificates?;
 
     #[cfg(feature = "render")]
     #[cfg(feature = "render")]
