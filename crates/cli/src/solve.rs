@@ -75,6 +75,33 @@ impl EngineObserver for Display {
     }
 }
 
+/// The progress display of `solve`, with the certificate writer of
+/// `--certificate`.
+fn display(args: &SolveArgs, names: &[String], start: Instant) -> Result<Display> {
+    let explicit_prove = args.prove || args.exact;
+    Ok(Display {
+        quiet: args.quiet,
+        paper: args.paper,
+        start,
+        progress: Progress::new(args.quiet),
+        exact: explicit_prove.then(|| crate::prove::Lines {
+            quiet: args.quiet,
+            start,
+            names: names.to_vec(),
+            certificates: None,
+        }),
+        certificates: match &args.certificate {
+            Some(dir) => Some(crate::certificate::Writer::new(
+                dir,
+                &args.figures,
+                &args.lattice.to_string(),
+                !args.no_mirror,
+            )?),
+            None => None,
+        },
+    })
+}
+
 pub fn run(args: SolveArgs) -> Result<Status> {
     let figures = input::figures(&args.figures, args.lattice)?;
     input::check_equal_areas(&args.figures, &figures)?;
@@ -95,38 +122,14 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     let stop = crate::stop::flag();
     let start = Instant::now();
     let explicit_prove = args.prove || args.exact;
-    let display = Display {
-        quiet: args.quiet,
-        paper: args.paper,
-        start,
-        progress: Progress::new(args.quiet),
-        exact: explicit_prove.then(|| crate::prove::Lines {
-            quiet: args.quiet,
-            start,
-            names: names.clone(),
-            certificates: None,
-        }),
-        certificates: match &args.certificate {
-            Some(dir) => Some(crate::certificate::Writer::new(
-                dir,
-                &args.figures,
-                &args.lattice.to_string(),
-                !args.no_mirror,
-            )?),
-            None => None,
-        },
-    };
+    let display = display(&args, &names, start)?;
     let report = dissect_engine::run(&figures, &names, &options, stop, &display);
     display.progress.finish();
     // The certificates' line on stderr (stdout's last line stays the verdict).
-    let certificates = match display.certificates.as_ref().map(|w| w.summary()) {
-        Some(Ok(line)) => {
-            progress::stderr_line(&line);
-            Ok(())
-        }
-        Some(Err(e)) => Err(e),
-        None => Ok(()),
-    };
+    let certificates = display
+        .certificates
+        .as_ref()
+        .map_or(Ok(()), |w| w.summary().map(|l| progress::stderr_line(&l)));
     let report = match report {
         Ok(r) => r,
         Err(e @ EngineError::Figures(_)) => return Err(InputError(e.to_string()).into()),
