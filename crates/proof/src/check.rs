@@ -8,8 +8,6 @@
 //! is made against the clauses actually present, and both RUP and RAT
 //! lemmas keep those satisfiable when they were.
 
-use std::collections::HashMap;
-
 use crate::parse::{Cnf, Proof, Step};
 use crate::ProofError;
 
@@ -30,23 +28,41 @@ pub struct Verified {
 }
 
 /// Literal `l` (DIMACS) as an index: `2 (|l| - 1) + (l < 0)`.
-fn code(l: i32) -> usize {
-    2 * (l.unsigned_abs() as usize - 1) + usize::from(l < 0)
+fn code(l: i32) -> u32 {
+    2 * (l.unsigned_abs() - 1) + u32::from(l < 0)
 }
 
+/// The literals of `clause` as sorted, distinct codes.
+fn codes(clause: &[i32]) -> Vec<u32> {
+    let mut lits: Vec<u32> = clause.iter().map(|&l| code(l)).collect();
+    lits.sort_unstable();
+    lits.dedup();
+    lits
+}
+
+/// The clauses present and their top-level unit propagation.
+///
+/// # Validity
+/// Clause `c` is `arena[start[c]..start[c] + size[c]]`; a clause of two or
+/// more literals is watched by its first two, in `watches` of each with the
+/// other as its blocker; at the top level (between steps) every watch is
+/// true or unassigned unless the other watch is true.
 struct Db {
-    lits: Vec<Vec<usize>>,
+    arena: Vec<u32>,
+    start: Vec<usize>,
+    size: Vec<u32>,
     alive: Vec<bool>,
-    /// `watches[l]`: clauses watching literal `l` (visited when `l` turns false).
-    watches: Vec<Vec<usize>>,
-    /// Per variable: 0 unassigned, 1 true, -1 false.
+    /// `watches[l]`: (clause, blocker) of the clauses watching literal `l`
+    /// (visited when `l` turns false).
+    watches: Vec<Vec<(u32, u32)>>,
+    /// Per literal: 0 unassigned, 1 true, -1 false.
     value: Vec<i8>,
     /// Per variable: the clause that set it at the top level.
-    reason: Vec<Option<usize>>,
-    trail: Vec<usize>,
+    reason: Vec<Option<u32>>,
+    trail: Vec<u32>,
     head: usize,
-    /// Clause ids by sorted literals, for deletions.
-    index: HashMap<Vec<usize>, Vec<usize>>,
+    /// Clause ids by sorted literals, for deletions (built at the first).
+    index: Option<std::collections::HashMap<Vec<u32>, Vec<u32>>>,
     /// A deleted clause was a top-level reason: propagate again from scratch.
     dirty: bool,
 }
@@ -54,37 +70,36 @@ struct Db {
 impl Db {
     fn new(vars: usize) -> Db {
         Db {
-            lits: Vec::new(),
+            arena: Vec::new(),
+            start: Vec::new(),
+            size: Vec::new(),
             alive: Vec::new(),
             watches: vec![Vec::new(); 2 * vars],
-            value: vec![0; vars],
+            value: vec![0; 2 * vars],
             reason: vec![None; vars],
             trail: Vec::new(),
             head: 0,
-            index: HashMap::new(),
+            index: None,
             dirty: false,
         }
     }
 
-    fn val(&self, l: usize) -> i8 {
-        let v = self.value[l >> 1];
-        if l & 1 == 1 {
-            -v
-        } else {
-            v
-        }
+    fn lits(&self, c: usize) -> &[u32] {
+        &self.arena[self.start[c]..self.start[c] + self.size[c] as usize]
     }
 
-    fn assign(&mut self, l: usize, reason: Option<usize>) {
-        self.value[l >> 1] = if l & 1 == 1 { -1 } else { 1 };
-        self.reason[l >> 1] = reason;
+    fn assign(&mut self, l: u32, reason: Option<u32>) {
+        self.value[l as usize] = 1;
+        self.value[(l ^ 1) as usize] = -1;
+        self.reason[(l >> 1) as usize] = reason;
         self.trail.push(l);
     }
 
     fn undo(&mut self, to: usize) {
         for &l in &self.trail[to..] {
-            self.value[l >> 1] = 0;
-            self.reason[l >> 1] = None;
+            self.value[l as usize] = 0;
+            self.value[(l ^ 1) as usize] = 0;
+            self.reason[(l >> 1) as usize] = None;
         }
         self.trail.truncate(to);
         self.head = self.head.min(to);
@@ -95,62 +110,53 @@ impl Db {
         while self.head < self.trail.len() {
             let falsified = self.trail[self.head] ^ 1;
             self.head += 1;
-            let mut list = std::mem::take(&mut self.watches[falsified]);
-            let mut keep = 0;
+            let mut list = std::mem::take(&mut self.watches[falsified as usize]);
+            let (mut i, mut keep) = (0, 0);
             let mut conflict = false;
-            let mut i = 0;
             while i < list.len() {
-                let c = list[i];
+                let (c, blocker) = list[i];
                 i += 1;
+                if self.value[blocker as usize] == 1 {
+                    list[keep] = (c, blocker);
+                    keep += 1;
+                    continue;
+                }
+                let c = c as usize;
                 if !self.alive[c] {
                     continue;
                 }
-                if conflict {
-                    list[keep] = c;
+                let (s, n) = (self.start[c], self.size[c] as usize);
+                if self.arena[s] == falsified {
+                    self.arena.swap(s, s + 1);
+                }
+                let other = self.arena[s];
+                if self.value[other as usize] == 1 {
+                    list[keep] = (c as u32, other);
                     keep += 1;
                     continue;
                 }
-                let lits = &mut self.lits[c];
-                if lits[0] == falsified {
-                    lits.swap(0, 1);
-                }
-                let other = lits[0];
-                let v0 = {
-                    let v = self.value[other >> 1];
-                    if other & 1 == 1 {
-                        -v
-                    } else {
-                        v
-                    }
-                };
-                if v0 == 1 {
-                    list[keep] = c;
-                    keep += 1;
-                    continue;
-                }
-                let value = &self.value;
-                let free = (2..lits.len()).find(|&k| {
-                    let l = lits[k];
-                    let v = value[l >> 1];
-                    (if l & 1 == 1 { -v } else { v }) != -1
-                });
+                let free = (s + 2..s + n).find(|&k| self.value[self.arena[k] as usize] != -1);
                 if let Some(k) = free {
-                    lits.swap(1, k);
-                    let w = lits[1];
-                    self.watches[w].push(c);
+                    self.arena.swap(s + 1, k);
+                    let w = self.arena[s + 1];
+                    self.watches[w as usize].push((c as u32, other));
                     continue;
                 }
-                list[keep] = c;
+                list[keep] = (c as u32, other);
                 keep += 1;
-                if v0 == -1 {
+                if self.value[other as usize] == -1 {
                     conflict = true;
+                    while i < list.len() {
+                        list[keep] = list[i];
+                        keep += 1;
+                        i += 1;
+                    }
                 } else {
-                    self.assign(other, Some(c));
+                    self.assign(other, Some(c as u32));
                 }
             }
             list.truncate(keep);
-            let added = std::mem::replace(&mut self.watches[falsified], list);
-            self.watches[falsified].extend(added);
+            self.watches[falsified as usize] = list;
             if conflict {
                 return true;
             }
@@ -161,21 +167,22 @@ impl Db {
     /// Adds a clause at the top level (no temporary assignment); `true`
     /// when the clauses present now propagate to a conflict.
     fn add(&mut self, clause: &[i32]) -> bool {
-        let mut lits: Vec<usize> = clause.iter().map(|&l| code(l)).collect();
-        lits.sort_unstable();
-        lits.dedup();
-        let id = self.lits.len();
-        self.index.entry(lits.clone()).or_default().push(id);
+        let mut lits = codes(clause);
+        let id = self.start.len() as u32;
+        if let Some(index) = &mut self.index {
+            index.entry(lits.clone()).or_default().push(id);
+        }
         let tautology = lits.windows(2).any(|w| w[0] ^ 1 == w[1]);
         // Watch the non-false literals first, true ones before the rest.
-        lits.sort_by_key(|&l| match self.val(l) {
+        lits.sort_by_key(|&l| match self.value[l as usize] {
             1 => 0,
             0 => 1,
             _ => 2,
         });
-        self.lits.push(lits);
+        self.start.push(self.arena.len());
+        self.size.push(lits.len() as u32);
+        self.arena.extend_from_slice(&lits);
         self.alive.push(true);
-        let lits = &self.lits[id];
         if tautology {
             return false;
         }
@@ -184,15 +191,15 @@ impl Db {
             1 => {}
             _ => {
                 let (a, b) = (lits[0], lits[1]);
-                self.watches[a].push(id);
-                self.watches[b].push(id);
+                self.watches[a as usize].push((id, b));
+                self.watches[b as usize].push((id, a));
             }
         }
         let first = lits[0];
-        match self.val(first) {
+        match self.value[first as usize] {
             -1 => true,
             1 => false,
-            _ if lits.len() == 1 || self.val(lits[1]) == -1 => {
+            _ if lits.len() == 1 || self.value[lits[1] as usize] == -1 => {
                 self.assign(first, Some(id));
                 self.propagate()
             }
@@ -202,16 +209,32 @@ impl Db {
 
     /// Deletes a clause with these literals; `false` when none is present.
     fn delete(&mut self, clause: &[i32]) -> bool {
-        let mut lits: Vec<usize> = clause.iter().map(|&l| code(l)).collect();
-        lits.sort_unstable();
-        lits.dedup();
-        let Some(id) = self.index.get_mut(&lits).and_then(Vec::pop) else {
+        if self.index.is_none() {
+            let mut index: std::collections::HashMap<Vec<u32>, Vec<u32>> =
+                std::collections::HashMap::new();
+            for c in 0..self.start.len() {
+                if self.alive[c] {
+                    let mut key = self.lits(c).to_vec();
+                    key.sort_unstable();
+                    index.entry(key).or_default().push(c as u32);
+                }
+            }
+            self.index = Some(index);
+        }
+        let lits = codes(clause);
+        let found = self
+            .index
+            .as_mut()
+            .and_then(|index| index.get_mut(&lits))
+            .and_then(Vec::pop);
+        let Some(id) = found else {
             return false;
         };
-        self.alive[id] = false;
-        let first = self.lits[id][0];
-        if self.reason[first >> 1] == Some(id) {
-            self.dirty = true;
+        self.alive[id as usize] = false;
+        if let Some(&first) = self.lits(id as usize).first() {
+            if self.reason[(first >> 1) as usize] == Some(id) {
+                self.dirty = true;
+            }
         }
         true
     }
@@ -222,12 +245,12 @@ impl Db {
         self.dirty = false;
         self.undo(0);
         self.head = 0;
-        for id in 0..self.lits.len() {
-            if self.alive[id] && self.lits[id].len() == 1 {
-                let l = self.lits[id][0];
-                match self.val(l) {
+        for id in 0..self.start.len() {
+            if self.alive[id] && self.size[id] == 1 {
+                let l = self.arena[self.start[id]];
+                match self.value[l as usize] {
                     -1 => return true,
-                    0 => self.assign(l, Some(id)),
+                    0 => self.assign(l, Some(id as u32)),
                     _ => {}
                 }
             }
@@ -236,10 +259,10 @@ impl Db {
     }
 
     /// Whether assigning the negation of `lits` propagates to a conflict.
-    fn rup(&mut self, lits: &[usize]) -> bool {
+    fn rup(&mut self, lits: &[u32]) -> bool {
         let saved = self.trail.len();
         for &l in lits {
-            match self.val(l) {
+            match self.value[l as usize] {
                 1 => {
                     self.undo(saved);
                     return true;
@@ -256,16 +279,16 @@ impl Db {
 
     /// Whether `lemma` is a RAT on its first literal: every resolvent with
     /// a clause present that holds the negation is a tautology or RUP.
-    fn rat(&mut self, lemma: &[usize]) -> bool {
+    fn rat(&mut self, lemma: &[u32]) -> bool {
         let Some(&pivot) = lemma.first() else {
             return false;
         };
-        for id in 0..self.lits.len() {
-            if !self.alive[id] || !self.lits[id].contains(&(pivot ^ 1)) {
+        for id in 0..self.start.len() {
+            if !self.alive[id] || !self.lits(id).contains(&(pivot ^ 1)) {
                 continue;
             }
-            let mut resolvent: Vec<usize> = lemma.to_vec();
-            resolvent.extend(self.lits[id].iter().copied().filter(|&l| l != pivot ^ 1));
+            let mut resolvent: Vec<u32> = lemma.to_vec();
+            resolvent.extend(self.lits(id).iter().copied().filter(|&l| l != pivot ^ 1));
             resolvent.sort_unstable();
             resolvent.dedup();
             if resolvent.windows(2).any(|w| w[0] ^ 1 == w[1]) {
@@ -309,7 +332,8 @@ pub fn check(cnf: &Cnf, proof: &Proof) -> Result<Verified, ProofError> {
             }
             Step::Add(lemma) => {
                 verified.lemmas += 1;
-                let codes: Vec<usize> = lemma.iter().map(|&l| code(l)).collect();
+                // The pivot (the first literal) first, for RAT.
+                let codes: Vec<u32> = lemma.iter().map(|&l| code(l)).collect();
                 if !db.rup(&codes) {
                     if !db.rat(&codes) {
                         return Err(ProofError::NotImplied {
