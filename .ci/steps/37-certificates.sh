@@ -48,3 +48,4 @@ certify squares-12-5-joined-to-13 3 square
 certify squares-6-6-7-split-to-11 5 square
 certify tri-triangle8-to-rect4x8 2 tri4
 certify cube4-cavity-to-7x4x2 4 cubic
+certify cubes-3-4-5-to-6 8 cubic

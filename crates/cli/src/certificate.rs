@@ -21,6 +21,7 @@ struct Entry {
     lemmas: usize,
     cuts: usize,
     connectivity: bool,
+    clique_only: bool,
 }
 
 /// Writes the certificates of a run as they come.
@@ -78,6 +79,7 @@ impl Writer {
                 lemmas: c.lemmas(),
                 cuts: c.cuts,
                 connectivity: c.connectivity,
+                clique_only: c.clique_only,
             },
         );
         write_atomic(&self.dir.join("README.txt"), self.readme(written))
@@ -98,6 +100,18 @@ impl Writer {
              Together they claim: no dissection of these figures into K or fewer pieces exists.\n\n",
         );
         for (k, e) in written {
+            if e.clique_only {
+                s.push_str(&format!(
+                    "k{k}.cnf, k{k}.drat: no dissection into at most {k} pieces, from the encoding's \
+                     clauses over {} pairwise incompatible cells only (each in some piece, the \
+                     first {k} in pieces 1..{k}, no two in one piece; the whole encoding would \
+                     not fit) ({} clauses, {} lemmas)\n",
+                    e.vars / k.max(&1),
+                    e.clauses,
+                    e.lemmas
+                ));
+                continue;
+            }
             s.push_str(&format!(
                 "k{k}.cnf, k{k}.drat: no dissection into at most {k} pieces ({} variables, {} clauses, \
                  {} lemmas; connectivity encoding: {}; connectivity cuts: {})\n",

@@ -150,7 +150,7 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
             dir,
             &args.figures,
             &args.lattice.to_string(),
-            !args.no_mirror,
+            !args.no_mirror && args.lattice.lattice().supports_mirror(),
         )?),
         None => None,
     };

@@ -95,7 +95,7 @@ fn display(args: &SolveArgs, names: &[String], start: Instant) -> Result<Display
                 dir,
                 &args.figures,
                 &args.lattice.to_string(),
-                !args.no_mirror,
+                !args.no_mirror && args.lattice.lattice().supports_mirror(),
             )?),
             None => None,
         },

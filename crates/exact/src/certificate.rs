@@ -9,6 +9,10 @@
 //! assignments that are no connected K-piece dissection, so a refutation
 //! of the whole formula proves that none exists.
 
+use std::sync::atomic::AtomicBool;
+
+use crate::sat_backend::Sat;
+
 /// A refuted formula and its DRAT proof.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Certificate {
@@ -27,6 +31,63 @@ pub struct Certificate {
     pub cuts: usize,
     /// Whether the connectivity encoding is among the clauses.
     pub connectivity: bool,
+    /// The formula holds only the clauses over the cells of a clique of
+    /// pairwise incompatible cells (each in some piece, the first K fixed to
+    /// pieces `0..K`, no two in one piece), a part of the placement
+    /// encoding: written when the whole encoding would not fit.
+    pub clique_only: bool,
+}
+
+/// The certificate of an UNSAT answer of `sat` (recording) for `k` pieces
+/// with `cuts` connectivity cuts; `None` when it was not recording.
+pub(crate) fn of_sat(
+    sat: &Sat<'_>,
+    k: usize,
+    cuts: usize,
+    connectivity: bool,
+) -> Option<Box<Certificate>> {
+    let (formula, clauses) = sat.dimacs()?;
+    Some(Box::new(Certificate {
+        pieces: k,
+        formula,
+        proof: sat.proof()?,
+        vars: sat.vars(),
+        clauses,
+        cuts,
+        connectivity,
+        clique_only: false,
+    }))
+}
+
+/// The placement encoding's clauses over `clique` pairwise incompatible
+/// cells for `k` pieces (`k < clique`), refuted: the clique bound's
+/// certificate when the whole encoding would not fit. `None` when stopped.
+pub(crate) fn clique(k: usize, clique: usize, stop: &AtomicBool) -> Option<Box<Certificate>> {
+    let mut sat = Sat::new(stop, None);
+    sat.record();
+    sat.record_proof();
+    let x: Vec<Vec<i32>> = (0..clique)
+        .map(|_| (0..k).map(|_| sat.var()).collect())
+        .collect();
+    for cell in &x {
+        sat.add(cell);
+    }
+    for (i, cell) in x.iter().enumerate().take(k) {
+        sat.add(&[cell[i]]);
+    }
+    for i in 0..k {
+        for a in 0..clique {
+            for b in a + 1..clique {
+                sat.add(&[-x[a][i], -x[b][i]]);
+            }
+        }
+    }
+    if sat.solve(None) != Some(false) {
+        return None;
+    }
+    let mut c = of_sat(&sat, k, 0, false)?;
+    c.clique_only = true;
+    Some(c)
 }
 
 impl Certificate {

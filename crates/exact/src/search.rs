@@ -291,7 +291,9 @@ impl Context<'_> {
     /// With certificates, the cheap bound `bound` (at least 2) refuted by
     /// SAT at `bound - 1` pieces, its certificate sent as
     /// [`ExactEvent::Certified`]; nothing when the encoding does not refute
-    /// it in time (the cheap bound still holds, uncertified).
+    /// it in time (the cheap bound still holds, uncertified). When the
+    /// encoding is too large and the bound is an incompatible clique's, the
+    /// certificate holds the clique's clauses only ([`Certificate::clique_only`]).
     fn certify_cheap(
         &self,
         bound: usize,
@@ -301,11 +303,15 @@ impl Context<'_> {
         if bound < 2 {
             return;
         }
-        if let Pass::Unsat {
-            certificate: Some(c),
-            ..
-        } = self.pass(bound - 1, MotionSet::All, deadline, left())
-        {
+        let certificate = match self.pass(bound - 1, MotionSet::All, deadline, left()) {
+            Pass::Unsat { certificate, .. } => certificate,
+            // The full encoding would not fit: the clique's clauses alone.
+            Pass::TooLarge(_) if self.clique.len() >= bound => {
+                crate::certificate::clique(bound - 1, self.clique.len(), self.stop)
+            }
+            _ => None,
+        };
+        if let Some(c) = certificate {
             self.observer.on_event(&ExactEvent::Certified(*c));
         }
     }
@@ -383,7 +389,7 @@ impl Context<'_> {
                     return Pass::Unsat {
                         cuts: total,
                         seconds: start.elapsed().as_secs_f64(),
-                        certificate: certificate(&sat, k, total, connected_encoding),
+                        certificate: crate::certificate::of_sat(&sat, k, total, connected_encoding),
                     }
                 }
                 Some(true) => {
@@ -430,26 +436,6 @@ impl Context<'_> {
             }
         }
     }
-}
-
-/// The certificate of an UNSAT answer of `sat` (recording) for `k`
-/// pieces; `None` when it was not recording.
-fn certificate(
-    sat: &Sat<'_>,
-    k: usize,
-    cuts: usize,
-    connectivity: bool,
-) -> Option<Box<Certificate>> {
-    let (formula, clauses) = sat.dimacs()?;
-    Some(Box::new(Certificate {
-        pieces: k,
-        formula,
-        proof: sat.proof()?,
-        vars: sat.vars(),
-        clauses,
-        cuts,
-        connectivity,
-    }))
 }
 
 /// Proves lower bounds and (in [`Mode::Minimum`], or when met on the way)

@@ -35,12 +35,29 @@ fn figures(lattice: LatticeKind, texts: &[&str]) -> Vec<Figure> {
 
 /// Certificates of a bound search up to `minimum - 1` pieces, each checked.
 fn certified(figs: &[Figure], mirror: bool, minimum: usize, eager: bool) -> Vec<Certificate> {
+    certified_with(
+        figs,
+        mirror,
+        minimum,
+        eager,
+        ExactOptions::default().max_encoding_bytes,
+    )
+}
+
+fn certified_with(
+    figs: &[Figure],
+    mirror: bool,
+    minimum: usize,
+    eager: bool,
+    max_encoding_bytes: u64,
+) -> Vec<Certificate> {
     let options = ExactOptions {
         mirror,
         mode: Mode::LowerBound,
         max_pieces: Some(minimum - 1),
         eager_connectivity: eager,
         certify: true,
+        max_encoding_bytes,
         ..ExactOptions::default()
     };
     let collect = Collect(Mutex::new(Vec::new()), Mutex::new(Vec::new()));
@@ -114,4 +131,24 @@ fn a_refutation_with_lemmas_is_certified() {
     let certs = certified(&figs, true, 3, true);
     let k2 = certs.iter().find(|c| c.pieces == 2).expect("k2 certified");
     assert!(k2.lemmas() > 1, "{} lemmas", k2.lemmas());
+}
+
+#[test]
+fn a_clique_bound_too_large_to_encode_is_certified_by_its_clique() {
+    // Squares 3 and 4 into 5: the 4 corners of the 5×5 square are pairwise
+    // incompatible. With no room for the encoding, the certificate of 3
+    // pieces holds the clique's clauses only.
+    let figs = figures(
+        LatticeKind::Square,
+        &[
+            "####..###\n####..###\n####..###\n####.....\n",
+            &"#####\n".repeat(5),
+        ],
+    );
+    let certs = certified_with(&figs, true, 4, true, 1);
+    assert_eq!(certs.len(), 1);
+    assert!(certs[0].clique_only && certs[0].pieces == 3);
+    assert_eq!(certs[0].vars, 4 * 3);
+    let full = certified(&figs, true, 4, true);
+    assert!(full.iter().all(|c| !c.clique_only && c.vars > 12));
 }
