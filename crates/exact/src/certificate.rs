@@ -75,10 +75,10 @@ pub(crate) fn clique(k: usize, clique: usize, stop: &AtomicBool) -> Option<Box<C
     for (i, cell) in x.iter().enumerate().take(k) {
         sat.add(&[cell[i]]);
     }
-    for i in 0..k {
-        for a in 0..clique {
-            for b in a + 1..clique {
-                sat.add(&[-x[a][i], -x[b][i]]);
+    for piece in 0..k {
+        for (a, first) in x.iter().enumerate() {
+            for second in &x[a + 1..] {
+                sat.add(&[-first[piece], -second[piece]]);
             }
         }
     }
