@@ -50,6 +50,9 @@ __all__ = [
     "Figure",
     "Dissection",
     "Assemblies",
+    "Disassembly",
+    "FigurePlan",
+    "Move",
     "LowerBound",
     "solve",
     "bound",
@@ -126,6 +129,100 @@ class Assemblies(NamedTuple):
     def unique(self) -> bool:
         """Whether the figure has exactly one tiling up to its symmetries."""
         return self.complete and self.up_to_symmetry == 1
+
+
+class Move(NamedTuple):
+    """One move of a disassembly plan: ``pieces`` (indices of the
+    dissection) go together by ``by`` (lattice steps along one axis);
+    ``removed``: the group goes away to infinity that way and is a part of
+    its own from then on."""
+
+    pieces: List[int]
+    by: Tuple[int, int, int]
+    removed: bool
+
+
+def _move(m: Dict[str, Any]) -> Move:
+    dx, dy, dz = (int(v) for v in m["by"])
+    return Move([int(i) for i in m["pieces"]], (dx, dy, dz), bool(m["removed"]))
+
+
+class FigurePlan(NamedTuple):
+    """How one figure comes apart (``level`` and ``moves``), or why not:
+    ``locked`` (the pieces that hold together) or ``stopped`` (not decided
+    within the time limit or before Ctrl-C)."""
+
+    #: The figure's name.
+    name: str
+    #: How many moves until the first piece (or group) comes free; None
+    #: when the figure does not come apart (or was not decided).
+    level: Optional[int]
+    #: The moves, in order (empty when there is no plan).
+    moves: List[Move]
+    #: The pieces that hold together when the figure cannot be taken apart.
+    locked: Optional[List[int]]
+    #: Whether the search ended before deciding.
+    stopped: bool
+    #: The line ``dissect disassemble`` prints for this figure.
+    line: str
+
+    @property
+    def apart(self) -> bool:
+        """Whether the figure comes apart (it has a plan)."""
+        return self.level is not None
+
+
+class Disassembly:
+    """The disassembly plans of a dissection's figures (``Dissection.
+    disassemble``): the plan file ``dissection-disassembly/1`` of ``dissect
+    disassemble -o``, one ``FigurePlan`` per figure in the solution's
+    order."""
+
+    def __init__(self, text: str, lines: Sequence[str]):
+        self._text = text
+        data: Dict[str, Any] = json.loads(text)
+        self.lattice: str = data["lattice"]
+        self.figures: List[FigurePlan] = [
+            FigurePlan(
+                name=f["name"],
+                level=f.get("level"),
+                moves=[_move(m) for m in f["moves"]],
+                locked=f.get("locked"),
+                stopped=bool(f.get("stopped", False)),
+                line=line,
+            )
+            for f, line in zip(data["figures"], lines)
+        ]
+
+    @property
+    def apart(self) -> bool:
+        """Whether every figure comes apart (``dissect disassemble`` exits 0)."""
+        return all(f.apart for f in self.figures)
+
+    @property
+    def levels(self) -> List[Optional[int]]:
+        """Every figure's level (None where it has no plan)."""
+        return [f.level for f in self.figures]
+
+    @property
+    def lines(self) -> List[str]:
+        """The lines ``dissect disassemble`` prints, one per figure."""
+        return [f.line for f in self.figures]
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The plan file as a dict."""
+        value: Dict[str, Any] = json.loads(self._text)
+        return value
+
+    def to_json(self, path: Union[str, "os.PathLike[str]", None] = None) -> str:
+        """The plan file's text (``dissection-disassembly/1``, as ``dissect
+        disassemble -o`` writes it); also written to ``path`` if given."""
+        if path is not None:
+            _write(path, self._text)
+        return self._text
+
+    def __repr__(self) -> str:
+        return f"<Disassembly {self.lattice}: levels {self.levels}>"
 
 
 class Dissection:
@@ -244,6 +341,16 @@ class Dissection:
         ``complete`` is False and the numbers are lower bounds)."""
         rows = _dissect.assemblies(self.figures, *self._parts(), time_limit=time_limit)
         return [Assemblies(**row) for row in rows]
+
+    def disassemble(self, time_limit: Optional[float] = None) -> Disassembly:
+        """A plan of straight moves that takes each figure apart, the
+        lowest level there is (the search of ``dissect disassemble``): moves
+        of one piece or a group, removals to infinity; a figure that cannot
+        be taken apart names its locked pieces. Flat lattices: every piece
+        lifts off (level 1). ``time_limit`` (seconds) bounds all figures
+        together; Ctrl-C stops it too (undecided figures are ``stopped``)."""
+        text, lines = _dissect.disassemble(self.figures, *self._parts(), time_limit=time_limit)
+        return Disassembly(text, lines)
 
     def plot(self, ax: Any = None, **kwargs: Any) -> Any:
         """Draws the figures side by side with matplotlib (``pip install

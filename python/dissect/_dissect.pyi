@@ -92,6 +92,14 @@ def assemblies(
     pieces: _Pieces,
     time_limit: Optional[float] = None,
 ) -> List[Dict[str, Any]]: ...
+def disassemble(
+    figures: Sequence[Figure],
+    lattice: str,
+    mirror: bool,
+    names: Sequence[str],
+    pieces: _Pieces,
+    time_limit: Optional[float] = None,
+) -> Tuple[str, List[str]]: ...
 def enumerate(
     figures: Sequence[Figure],
     pieces: Optional[int] = None,

@@ -11,6 +11,7 @@
 use pyo3::prelude::*;
 
 mod assemblies;
+mod disassemble;
 mod enumerate;
 mod errors;
 mod figure;
@@ -29,6 +30,7 @@ fn _dissect(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(solve::solution_json, m)?)?;
     m.add_function(wrap_pyfunction!(solve::option_names, m)?)?;
     m.add_function(wrap_pyfunction!(assemblies::assemblies, m)?)?;
+    m.add_function(wrap_pyfunction!(disassemble::disassemble, m)?)?;
     m.add_function(wrap_pyfunction!(picture::piece_colour, m)?)?;
     m.add_function(wrap_pyfunction!(picture::render_svg, m)?)?;
     m.add_function(wrap_pyfunction!(picture::render_html, m)?)?;

@@ -7,10 +7,9 @@ use std::path::PathBuf;
 
 use anyhow::Result;
 use clap::Args;
-use dissect_core::ascii::piece_letter;
 use dissect_core::LatticeKind;
 use dissect_engine::{Disassembly, DisassemblyError, TimeLimit};
-use dissect_puzzle::disassembly::{plan_json, Undecided, MAX_STATES};
+use dissect_puzzle::disassembly::{outcome_line, plan_json};
 
 use crate::{input, output, InputError, Status};
 
@@ -35,32 +34,6 @@ pub struct DisassembleArgs {
     /// The figures, in the solution's order.
     #[arg(required = true, num_args = 1.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
-}
-
-/// The result line of one figure.
-pub fn line(name: &str, outcome: &Disassembly) -> String {
-    match outcome {
-        Disassembly::Apart(plan) => format!(
-            "{name}: apart in {} move{} (level {})",
-            plan.moves.len(),
-            if plan.moves.len() == 1 { "" } else { "s" },
-            plan.level
-        ),
-        Disassembly::Locked(pieces) => {
-            let letters: Vec<String> = pieces
-                .iter()
-                .map(|&i| piece_letter(i).to_string())
-                .collect();
-            format!(
-                "{name}: cannot be taken apart by straight moves (pieces {} locked)",
-                letters.join(", ")
-            )
-        }
-        Disassembly::Undecided(Undecided::TooManyStates) => {
-            format!("{name}: not decided (more than {MAX_STATES} positions)")
-        }
-        _ => format!("{name}: not decided (stopped)"),
-    }
 }
 
 pub fn run(args: DisassembleArgs) -> Result<Status> {
@@ -90,7 +63,7 @@ pub fn run(args: DisassembleArgs) -> Result<Status> {
         Some(crate::stop::flag()),
         |f, outcome| {
             let mut out = std::io::stdout().lock();
-            _ = writeln!(out, "{}", line(&names[f], outcome));
+            _ = writeln!(out, "{}", outcome_line(&names[f], outcome));
             _ = out.flush();
         },
     )

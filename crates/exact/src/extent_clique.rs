@@ -19,7 +19,7 @@
 //! the corners of a cube against smaller pieces are what such a bound needs,
 //! and the clique search stays tiny.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use dissect_core::lattice::Point;
 
@@ -40,7 +40,7 @@ const MAX_FLAGS: usize = 1 << 26;
 /// one component, per residue of `q1`.
 struct Differences {
     /// The residue classes of the shape's points, numbered.
-    residues: HashMap<Point, usize>,
+    residues: FxHashMap<Point, usize>,
     /// The smallest difference on each axis.
     lo: [i32; 3],
     /// The box of differences on each axis.
@@ -53,7 +53,7 @@ impl Differences {
     /// The difference set of `shape`; `None` when `interrupted` or when it
     /// would be larger than `MAX_FLAGS`.
     fn of(inst: &Instance, shape: &Shape, interrupted: &dyn Fn() -> bool) -> Option<Differences> {
-        let mut residues: HashMap<Point, usize> = HashMap::new();
+        let mut residues: FxHashMap<Point, usize> = FxHashMap::default();
         let class: Vec<usize> = shape
             .points
             .iter()

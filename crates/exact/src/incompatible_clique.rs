@@ -4,8 +4,6 @@
 //! them inside another figure. Pairwise incompatible cells need pairwise different
 //! pieces, so a clique of the incompatibility graph is a lower bound.
 
-use std::collections::HashSet;
-
 use dissect_core::lattice::Point;
 
 use crate::instance::Instance;
@@ -57,31 +55,24 @@ impl Incompatibility {
             }
             let mut together = vec![vec![0u64; words]; n];
             for g in &inst.syms {
-                let images: Vec<Point> = s.points.iter().map(|p| g.apply(*p)).collect();
-                let mut shifts: HashSet<Point> = HashSet::new();
-                for (c, gp) in images.iter().enumerate() {
-                    if c.is_multiple_of(256) && interrupted() {
-                        return None;
-                    }
-                    for q in &target.points {
-                        let t = q - gp;
-                        if inst.is_translation(t) {
-                            shifts.insert(t);
-                        }
-                    }
+                if interrupted() {
+                    return None;
                 }
-                let mut shifts: Vec<Point> = shifts.into_iter().collect();
-                shifts.sort_unstable();
-                for t in shifts {
-                    if interrupted() {
+                let images: Vec<Point> = s.points.iter().map(|p| g.apply(*p)).collect();
+                let overlaps = Overlaps::of(inst, &images, &target.points, interrupted)?;
+                for (i, cells) in overlaps.lists().enumerate() {
+                    if i % 4096 == 4095 && interrupted() {
                         return None;
                     }
-                    for (c, gp) in images.iter().enumerate() {
-                        inside[c] = target.index.contains_key(&(gp + t));
-                        seen[c] = false;
+                    if cells.len() < 2 {
+                        continue;
                     }
-                    for start in 0..n {
-                        if !inside[start] || seen[start] {
+                    for &c in cells {
+                        inside[c as usize] = true;
+                    }
+                    for &start in cells {
+                        let start = start as usize;
+                        if seen[start] {
                             continue;
                         }
                         seen[start] = true;
@@ -109,6 +100,10 @@ impl Incompatibility {
                                 *w |= m;
                             }
                         }
+                    }
+                    for &c in cells {
+                        inside[c as usize] = false;
+                        seen[c as usize] = false;
                     }
                 }
             }
@@ -258,4 +253,90 @@ fn first(bits: &[u64]) -> Option<usize> {
         .enumerate()
         .find(|(_, w)| **w != 0)
         .map(|(i, w)| i * 64 + w.trailing_zeros() as usize)
+}
+
+/// For every lattice translation `t`, the cells `c` whose moved point
+/// `images[c] + t` is a point of the target: the pairs grouped by
+/// translation (counting sort over the box of translations), so a motion
+/// costs one pass over the pairs that land rather than one lookup per cell
+/// and translation.
+struct Overlaps {
+    /// `starts[i]..starts[i + 1]` indexes translation `i`'s cells.
+    starts: Vec<u32>,
+    cells: Vec<u32>,
+}
+
+impl Overlaps {
+    /// `None` when `interrupted` says so (asked every 256 cells).
+    fn of(
+        inst: &Instance,
+        images: &[Point],
+        target: &[Point],
+        interrupted: &dyn Fn() -> bool,
+    ) -> Option<Overlaps> {
+        let (ilo, ihi) = bounds(images);
+        let (tlo, thi) = bounds(target);
+        let m = inst.modulus;
+        let mut lo = [0i32; 3];
+        let mut size = [1usize; 3];
+        for d in 0..inst.dim {
+            lo[d] = (tlo[d] - ihi[d]).div_euclid(m);
+            size[d] = ((thi[d] - ilo[d]).div_euclid(m) - lo[d] + 1) as usize;
+        }
+        let index = |t: Point| -> Option<usize> {
+            if !inst.is_translation(t) {
+                return None;
+            }
+            let mut i = 0usize;
+            for d in (0..inst.dim).rev() {
+                i = i * size[d] + (t[d] / m - lo[d]) as usize;
+            }
+            Some(i)
+        };
+        let mut starts = vec![0u32; size[0] * size[1] * size[2] + 1];
+        for (c, gp) in images.iter().enumerate() {
+            if c % 256 == 255 && interrupted() {
+                return None;
+            }
+            for q in target {
+                if let Some(i) = index(*q - *gp) {
+                    starts[i + 1] += 1;
+                }
+            }
+        }
+        for i in 1..starts.len() {
+            starts[i] += starts[i - 1];
+        }
+        let mut next = starts.clone();
+        let mut cells = vec![0u32; starts[starts.len() - 1] as usize];
+        for (c, gp) in images.iter().enumerate() {
+            for q in target {
+                if let Some(i) = index(*q - *gp) {
+                    cells[next[i] as usize] = c as u32;
+                    next[i] += 1;
+                }
+            }
+        }
+        Some(Overlaps { starts, cells })
+    }
+
+    /// Every translation's cells, in ascending order.
+    fn lists(&self) -> impl Iterator<Item = &[u32]> {
+        self.starts
+            .windows(2)
+            .map(|w| &self.cells[w[0] as usize..w[1] as usize])
+    }
+}
+
+/// The smallest and largest coordinates of `points`.
+fn bounds(points: &[Point]) -> ([i32; 3], [i32; 3]) {
+    let mut lo = [i32::MAX; 3];
+    let mut hi = [i32::MIN; 3];
+    for p in points {
+        for d in 0..3 {
+            lo[d] = lo[d].min(p[d]);
+            hi[d] = hi[d].max(p[d]);
+        }
+    }
+    (lo, hi)
 }

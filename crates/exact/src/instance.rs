@@ -4,6 +4,8 @@
 
 use std::collections::HashMap;
 
+use rustc_hash::FxHashMap;
+
 use dissect_core::lattice::{Point, Symmetry};
 use dissect_core::{Cell, Figure, LatticeKind};
 
@@ -15,7 +17,7 @@ use dissect_core::{Cell, Figure, LatticeKind};
 pub(crate) struct Shape {
     pub cells: Vec<Cell>,
     pub points: Vec<Point>,
-    pub index: HashMap<Point, usize>,
+    pub index: FxHashMap<Point, usize>,
     /// Neighbours inside the figure.
     pub adj: Vec<Vec<usize>>,
     /// The component id of each cell.

@@ -2,7 +2,7 @@
 //! of the reference figure into another figure, and the symmetries of a
 //! figure, used to break the symmetry of the search.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use dissect_core::lattice::Point;
 use dissect_core::transform::Transform;
@@ -64,7 +64,7 @@ pub(crate) fn motions_into(
         if !set.admits(gi, g.determinant()) {
             continue;
         }
-        let mut shifts: HashMap<Point, u32> = HashMap::new();
+        let mut shifts: FxHashMap<Point, u32> = FxHashMap::default();
         for (c, p) in from.points.iter().enumerate() {
             if c.is_multiple_of(256) && interrupted() {
                 return None;

@@ -27,7 +27,7 @@
 //! ends it first. Every dissection returned has passed
 //! `dissect_core::verify`.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
@@ -469,7 +469,7 @@ fn best_motion(inst: &Instance, from: &[usize], f: usize, to: &[usize]) -> Optio
                 }
             }
         } else {
-            let mut votes: HashMap<Point, u32> = HashMap::new();
+            let mut votes: FxHashMap<Point, u32> = FxHashMap::default();
             for p in &img {
                 for &b in to {
                     let q = pf[b];
@@ -803,7 +803,7 @@ impl<'c, 'a> Round<'c, 'a> {
             let home = first.and_then(|a| {
                 self.cand.best[f][i].map(|(t, _)| (s0.points[a], t.apply(s0.points[a])))
             });
-            let mut votes: HashMap<(usize, Point), u32> = HashMap::new();
+            let mut votes: FxHashMap<(usize, Point), u32> = FxHashMap::default();
             for (gi, g) in inst.syms.iter().enumerate() {
                 for &a in &holds0 {
                     let ga = g.apply(s0.points[a]);

@@ -574,6 +574,34 @@ impl Search<'_> {
     }
 }
 
+/// The one-line verdict on a figure, as `dissect disassemble` prints it:
+/// `NAME: apart in M moves (level L)`, `NAME: cannot be taken apart by
+/// straight moves (pieces A, C locked)` or `NAME: not decided (...)`.
+pub fn outcome_line(name: &str, outcome: &Disassembly) -> String {
+    match outcome {
+        Disassembly::Apart(plan) => format!(
+            "{name}: apart in {} move{} (level {})",
+            plan.moves.len(),
+            if plan.moves.len() == 1 { "" } else { "s" },
+            plan.level
+        ),
+        Disassembly::Locked(pieces) => {
+            let letters: Vec<String> = pieces
+                .iter()
+                .map(|&i| dissect_core::ascii::piece_letter(i).to_string())
+                .collect();
+            format!(
+                "{name}: cannot be taken apart by straight moves (pieces {} locked)",
+                letters.join(", ")
+            )
+        }
+        Disassembly::Undecided(Undecided::TooManyStates) => {
+            format!("{name}: not decided (more than {MAX_STATES} positions)")
+        }
+        Disassembly::Undecided(Undecided::Stopped) => format!("{name}: not decided (stopped)"),
+    }
+}
+
 /// The format name of a plan file.
 pub const PLAN_FORMAT: &str = "dissection-disassembly/1";
 

@@ -7,7 +7,12 @@
 // The data is `dissect-animation/1` from dissect_render::animation: every
 // figure's pieces (outline rings or cubes, in lattice units), the rigid map
 // `x -> matrix·x + shift` carrying each piece from figure 0 to that figure,
-// and an assembly order per figure. This module only interpolates those maps.
+// and an assembly order per figure. A 3D figure that comes apart carries its
+// disassembly plan (`plan`: moves of a piece or a group by a displacement, in
+// order): the motion takes the first figure apart by its plan's moves, carries
+// the pieces over, turning, to where the next figure's plan leaves them, and
+// puts the next figure together by its plan in reverse. This module only
+// interpolates those maps and moves.
 
 const STYLE = `
 .dp { font: 14px system-ui, sans-serif; color: #1d1d1f; }
@@ -19,12 +24,14 @@ const STYLE = `
 .dp-legend label { display: inline-flex; align-items: center; gap: 4px; padding: 2px 8px; border-radius: 4px; border: 1px solid #0002; cursor: pointer; }
 .dp-stage { position: relative; border: 1px solid #ddd; border-radius: 6px; background: #fff; touch-action: none; }
 .dp-stage canvas { display: block; width: 100%; }
+.dp-plan { color: #555; font-size: 13px; }
 .dp-hint { position: absolute; right: 8px; bottom: 6px; color: #888; font-size: 12px; pointer-events: none; }
 `;
 
 const smooth = (s) => s * s * (3 - 2 * s);
 const clamp01 = (v) => Math.max(0, Math.min(1, v));
 const lerp = (a, b, s) => a.map((v, j) => v + (b[j] - v) * s);
+const add3 = (a, b) => a.map((v, j) => v + b[j]);
 
 // ------------------------------------------------------------ linear algebra
 
@@ -177,7 +184,9 @@ export function createPlayer(host, data, options = {}) {
   const motionBits = el('span', { className: 'dp-motion', style: 'display:inline-flex;gap:8px;align-items:center' },
     fromSel, el('span', { textContent: '→' }), toSel, play, slider,
     el('label', { title: 'move the pieces one at a time, in an order a person could lay them down' }, one, 'one at a time'));
-  const bar = el('div', { className: 'dp-bar' }, mode, motionBits);
+  const planInfo = el('span', { className: 'dp-plan' });
+  planInfo.dataset.testid = 'plan-step';
+  const bar = el('div', { className: 'dp-bar' }, mode, motionBits, planInfo);
   if (dim === 3) bar.append(el('label', {}, 'explode', explode), reset);
   const legend = el('div', { className: 'dp-legend' });
   const canvas = el('canvas');
@@ -239,6 +248,8 @@ export function createPlayer(host, data, options = {}) {
     const a = st.from, b = st.to;
     const off = row(a === b ? [a] : [a, b]);
     const order = data.figures[b].order;
+    const tl = timeline(a, b);
+    if (tl) return { out: planned(a, b, off, order, tl), off, moving: true };
     for (let i = 0; i < nPieces; i++) {
       let s = st.t;
       if (st.oneAtATime) s = clamp01(st.t * nPieces - order.indexOf(i));
@@ -253,6 +264,91 @@ export function createPlayer(host, data, options = {}) {
       out.push({ piece: i, fig: a, m: partialMap(r, s), c: pa.centre, p, s, from, to });
     }
     return { out, off, moving: true };
+  }
+
+  // ------------------------------------------------ disassembly plans (3D)
+
+  // The carrying over from one figure to the next lasts as long as TRANSIT moves of a plan.
+  const TRANSIT = 3;
+  /** A plan's moves with every piece's offset after each: cum[k][i] after k moves. */
+  function staged(moves) {
+    const cum = [Array.from({ length: nPieces }, () => [0, 0, 0])];
+    for (const m of moves) {
+      const prev = cum[cum.length - 1];
+      cum.push(prev.map((o, i) => (m.pieces.includes(i) ? o.map((v, j) => v + m.by[j]) : o)));
+    }
+    return { moves, cum, apart: cum[cum.length - 1] };
+  }
+  const plans = data.figures.map((f) => (dim === 3 && Array.isArray(f.plan) ? staged(f.plan) : null));
+  /** The motion from figure a to b in moves: a's plan, the carrying over, b's plan in reverse (null: no plan on either side). */
+  function timeline(a, b) {
+    const pa = plans[a], pb = plans[b];
+    if (!pa && !pb) return null;
+    const na = pa ? pa.moves.length : 0, nb = pb ? pb.moves.length : 0;
+    return { pa, pb, na, nb, total: na + TRANSIT + nb };
+  }
+  /** Piece i's offset in plan pl after k moves and the fraction f of move k. */
+  function offsetAt(pl, k, f, i) {
+    if (!pl) return [0, 0, 0];
+    const o = pl.cum[Math.min(k, pl.moves.length)][i];
+    const m = pl.moves[k];
+    if (f <= 0 || !m || !m.pieces.includes(i)) return o;
+    return o.map((v, j) => v + m.by[j] * f);
+  }
+  /** The pieces at st.t when a plan is played (see timeline). */
+  function planned(a, b, off, order, tl) {
+    const u = st.t * tl.total;
+    const out = [];
+    for (let i = 0; i < nPieces; i++) {
+      const pa = data.figures[a].pieces[i], pb = data.figures[b].pieces[i];
+      const r = matMul(pb.matrix, transpose(pa.matrix));
+      const home = pa.centre.map((v, j) => v + off.get(a)[j]);
+      const dest = pb.centre.map((v, j) => v + off.get(b)[j]);
+      const zero = [0, 0, 0];
+      const from = add3(home, tl.pa ? tl.pa.apart[i] : zero);
+      const to = add3(dest, tl.pb ? tl.pb.apart[i] : zero);
+      // Every place the piece passes through, for the frame.
+      const rest = [...(tl.pa ? tl.pa.cum : [[zero]]).map((c) => add3(home, c[i] || zero)),
+        ...(tl.pb ? tl.pb.cum : [[zero]]).map((c) => add3(dest, c[i] || zero))];
+      let p, m, s;
+      if (u < tl.na) {
+        const k = Math.floor(u);
+        p = add3(home, offsetAt(tl.pa, k, smooth(u - k), i));
+        m = partialMap(r, 0);
+        s = 0;
+      } else if (u <= tl.na + TRANSIT) {
+        s = (u - tl.na) / TRANSIT;
+        if (st.oneAtATime) s = clamp01(s * nPieces - order.indexOf(i));
+        s = smooth(clamp01(s));
+        p = lerp(from, to, s);
+        p[2] += lift * Math.sin(Math.PI * s);
+        m = partialMap(r, s);
+      } else {
+        const v = Math.min(tl.nb, u - tl.na - TRANSIT), j = Math.floor(v);
+        p = add3(dest, j >= tl.nb ? zero : offsetAt(tl.pb, tl.nb - 1 - j, 1 - smooth(v - j), i));
+        m = r;
+        s = 1;
+      }
+      out.push({ piece: i, fig: a, m, c: pa.centre, p, s, from, to, rest });
+    }
+    return out;
+  }
+
+  const letter = (i) => data.pieces[i].label;
+  /** What the plan is doing now, in words (empty without a plan). */
+  function planText() {
+    const tl = st.mode === 'motion' ? timeline(st.from, st.to) : null;
+    if (!tl) return '';
+    const u = st.t * tl.total;
+    const say = (fig, pl, k, verb) => {
+      const m = pl.moves[k];
+      const what = m.pieces.map(letter).join('+');
+      return `${data.figures[fig].name}: move ${k + 1} of ${pl.moves.length} (level ${data.figures[fig].level}): ${what} ${m.removed ? verb : 'slides'}`;
+    };
+    if (u < tl.na) return say(st.from, tl.pa, Math.floor(u), 'comes out');
+    if (u <= tl.na + TRANSIT) return 'to the next figure';
+    const j = Math.min(tl.nb - 1, Math.floor(u - tl.na - TRANSIT));
+    return say(st.to, tl.pb, tl.nb - 1 - j, 'goes in');
   }
 
   const place = (inst, x) => {
@@ -283,6 +379,7 @@ export function createPlayer(host, data, options = {}) {
     if (dim === 3) draw3d(g, w, h, out, off, moving); else draw2d(g, w, h, out, off, moving);
     slider.value = String(Math.round(st.t * 1000));
     host.dataset.t = String(st.t);
+    planInfo.textContent = planText();
   }
 
   function draw2d(g, w, h, out, off, moving) {
@@ -397,7 +494,7 @@ export function createPlayer(host, data, options = {}) {
         const rad = radius[inst.piece];
         const top = lerp(inst.from, inst.to, 0.5);
         top[2] += lift;
-        for (const q of [inst.from, inst.to, top]) {
+        for (const q of [inst.from, inst.to, top, ...(inst.rest || [])]) {
           const s = [dot(q, r), -dot(q, u)];
           for (let j = 0; j < 2; j++) { lo[j] = Math.min(lo[j], s[j] - rad); hi[j] = Math.max(hi[j], s[j] + rad); }
         }
@@ -465,7 +562,10 @@ export function createPlayer(host, data, options = {}) {
   // ------------------------------------------------------------- controls
 
   let raf = 0, last = 0;
-  const duration = () => 2500 + 500 * (st.oneAtATime ? nPieces : 1);
+  const duration = () => {
+    const tl = timeline(st.from, st.to);
+    return 2500 + 500 * (st.oneAtATime ? nPieces : 1) + (tl ? 700 * (tl.na + tl.nb) : 0);
+  };
   function tick(now) {
     if (!st.playing) return;
     if (last) st.t = Math.min(1, st.t + (now - last) / duration());
@@ -483,6 +583,11 @@ export function createPlayer(host, data, options = {}) {
         hidden: [...st.hidden], lift, yaw: st.yaw, pitch: st.pitch, zoom: st.zoom,
         offsets: Object.fromEntries([...off].map(([f, o]) => [f, o])),
         pieces: out.map((p) => ({ piece: p.piece, figure: p.fig, s: p.s, matrix: p.m, centre: p.p })),
+        // The plan's timeline (3D figures with a disassembly plan): moves of the first figure, the carrying over, moves of the second; in moves.
+        timeline: (() => {
+          const tl = st.mode === 'motion' ? timeline(st.from, st.to) : null;
+          return tl && { from_moves: tl.na, transit: TRANSIT, to_moves: tl.nb, total: tl.total };
+        })(),
         view,
       };
     },

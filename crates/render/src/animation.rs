@@ -4,7 +4,12 @@
 //! figure, and an assembly order (3D: the reverse of the disassembly plan
 //! of `dissect_puzzle::disassembly` when the figure comes apart, so no
 //! piece is placed where a hand could not put it; the figure's `level`
-//! beside it). The player only interpolates these
+//! beside it, or the pieces that lock). A 3D figure that comes apart also
+//! carries its plan's moves as the player plays them (`plan`: the pieces
+//! of each move and their displacement, removals set down clear of
+//! everything, [`played_moves`]): the player takes the first figure apart
+//! by them, carries the pieces over, and puts the next figure together by
+//! its plan in reverse. The player only interpolates these
 //! motions; it derives no geometry of its own.
 //!
 //! The motions come from `dissect_core::motion` (a symmetry and a
@@ -13,11 +18,13 @@
 //! the cells they move (exact, since a lattice's points are an affine image
 //! of the cell centres).
 
+use dissect_core::lattice::Point;
 use dissect_core::motion::{assembly_order, motions};
 use dissect_core::transform::Transform;
 use dissect_core::{Cell, Lattice, LatticeKind};
 use dissect_puzzle::disassembly::{disassemble, Disassembly, Limits, Plan};
 use serde_json::{json, Value};
+use std::collections::HashSet;
 
 use crate::scene::cell_centre;
 use crate::{RenderError, Scene};
@@ -158,27 +165,140 @@ fn invert(a: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
 /// of work: the same order on every machine).
 pub const PLAN_STATES: usize = 20_000;
 
-/// An order in which a person can put the pieces of one figure together,
-/// and the figure's disassembly level. 3D: the reverse of the order in which
-/// the disassembly plan leaves each piece on its own; a figure that does
-/// not come apart (or is not decided within [`PLAN_STATES`]) gets
-/// [`assembly_order`] and no level. Flat figures: [`assembly_order`],
-/// level 1.
-pub fn assembly_plan_order(
-    lattice: &dyn Lattice,
-    pieces: &[Vec<Cell>],
-) -> (Vec<usize>, Option<usize>) {
+/// What the player knows of how one figure is taken apart and put
+/// together.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FigurePlan {
+    /// An order in which a person can put the pieces together (3D: the
+    /// reverse of the order in which the plan leaves each piece on its
+    /// own).
+    pub order: Vec<usize>,
+    /// The disassembly level (`None`: no plan).
+    pub level: Option<usize>,
+    /// 3D figures that come apart: the plan's moves as the player plays
+    /// them ([`played_moves`]); `None` otherwise.
+    pub moves: Option<Vec<PlayedMove>>,
+    /// The pieces that hold together when the figure cannot be taken apart
+    /// by straight moves (`None`: it can, or it was not decided).
+    pub locked: Option<Vec<usize>>,
+}
+
+/// The plan of one figure for the player. 3D: the disassembly plan of
+/// `dissect_puzzle::disassembly` (at most [`PLAN_STATES`] positions), its
+/// moves played by [`played_moves`] and its reverse as the assembly order;
+/// a figure that does not come apart (or is not decided) gets
+/// [`assembly_order`], no level and no moves. Flat figures:
+/// [`assembly_order`], level 1, no moves (the pieces lift off).
+pub fn figure_plan(lattice: LatticeKind, pieces: &[Vec<Cell>]) -> FigurePlan {
+    let l = lattice.lattice();
     let limits = Limits {
         max_states: PLAN_STATES,
         ..Limits::default()
     };
-    match disassemble(lattice, pieces, limits) {
-        Ok(Disassembly::Apart(plan)) if lattice.dim() == 3 => {
-            (reverse_of_plan(&plan, pieces.len()), Some(plan.level))
-        }
-        Ok(Disassembly::Apart(plan)) => (assembly_order(lattice, pieces), Some(plan.level)),
-        _ => (assembly_order(lattice, pieces), None),
+    let stacked = || assembly_order(l, pieces);
+    match disassemble(l, pieces, limits) {
+        Ok(Disassembly::Apart(plan)) if l.dim() == 3 => FigurePlan {
+            order: reverse_of_plan(&plan, pieces.len()),
+            level: Some(plan.level),
+            moves: Some(played_moves(lattice, pieces, &plan)),
+            locked: None,
+        },
+        Ok(Disassembly::Apart(plan)) => FigurePlan {
+            order: stacked(),
+            level: Some(plan.level),
+            moves: None,
+            locked: None,
+        },
+        Ok(Disassembly::Locked(locked)) => FigurePlan {
+            order: stacked(),
+            level: None,
+            moves: None,
+            locked: Some(locked),
+        },
+        _ => FigurePlan {
+            order: stacked(),
+            level: None,
+            moves: None,
+            locked: None,
+        },
     }
+}
+
+/// One move of a figure's disassembly as the player plays it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlayedMove {
+    /// The pieces that move together (indices of the dissection).
+    pub pieces: Vec<usize>,
+    /// Their displacement in the drawing's coordinates.
+    pub by: Vec<f64>,
+    /// Whether the plan takes the group out of its part here.
+    pub removed: bool,
+}
+
+/// The moves of `plan` (a plan of the figure made of `pieces`) as the
+/// player shows them, in the plan's order and groups. A move that is not a
+/// removal goes exactly as far as the plan says. A removal, which the plan
+/// sends to infinity, goes one step further than the plan's `by` (a gap
+/// after its part) and on until the group, and the group one step further
+/// still, meets no other piece of the figure: removed groups are set down
+/// clear of everything, and the figure ends apart with no two pieces
+/// overlapping.
+pub fn played_moves(lattice: LatticeKind, pieces: &[Vec<Cell>], plan: &Plan) -> Vec<PlayedMove> {
+    let l = lattice.lattice();
+    let m = l.modulus();
+    let mut at: Vec<Vec<Point>> = pieces
+        .iter()
+        .map(|p| p.iter().map(|c| l.to_point(*c)).collect())
+        .collect();
+    let mut out = Vec::with_capacity(plan.moves.len());
+    for mv in &plan.moves {
+        let axis = (0..3).find(|&a| mv.by[a] != 0).unwrap_or(0);
+        let sign = mv.by[axis].signum();
+        let unit = |k: i32| {
+            let mut v = [0i32; 3];
+            v[axis] = sign * k * m;
+            Point::from(v)
+        };
+        let mut steps = mv.by[axis].abs();
+        if mv.removed {
+            let others: HashSet<Point> = (0..at.len())
+                .filter(|i| !mv.pieces.contains(i))
+                .flat_map(|i| at[i].iter().copied())
+                .collect();
+            let clear = |k: i32| {
+                mv.pieces.iter().flat_map(|&i| &at[i]).all(|p| {
+                    !others.contains(&(*p + unit(k))) && !others.contains(&(*p + unit(k + 1)))
+                })
+            };
+            steps += 1;
+            while !clear(steps) {
+                steps += 1;
+            }
+        }
+        let shift = unit(steps);
+        for &i in &mv.pieces {
+            for p in &mut at[i] {
+                *p = *p + shift;
+            }
+        }
+        let dim = l.dim();
+        let by = mv
+            .pieces
+            .first()
+            .and_then(|&i| pieces[i].first())
+            .and_then(|&c| {
+                let moved = l.from_point(l.to_point(c) + shift)?;
+                let (a, b) = (centre(lattice, c), centre(lattice, moved));
+                Some((0..dim).map(|j| clean(b[j] - a[j])).collect())
+            })
+            .unwrap_or_else(|| vec![0.0; dim]);
+        out.push(PlayedMove {
+            pieces: mv.pieces.clone(),
+            by,
+            removed: mv.removed,
+        });
+    }
+    out
 }
 
 /// The pieces in the reverse of the order the plan leaves them alone in a
@@ -273,13 +393,21 @@ pub fn data(scene: &Scene) -> Result<Value, RenderError> {
                     v
                 })
                 .collect();
-            let (order, level) = assembly_plan_order(l, &pieces[f]);
+            let plan = figure_plan(lattice, &pieces[f]);
+            let moves = plan.moves.as_ref().map(|moves| {
+                moves
+                    .iter()
+                    .map(|m| json!({"pieces": m.pieces, "by": m.by, "removed": m.removed}))
+                    .collect::<Vec<_>>()
+            });
             json!({
                 "name": scene.name(f),
                 "min": lo,
                 "max": hi,
-                "order": order,
-                "level": level,
+                "order": plan.order,
+                "level": plan.level,
+                "locked": plan.locked,
+                "plan": moves,
                 "pieces": ps,
             })
         })
@@ -347,7 +475,8 @@ mod tests {
             .collect();
         // A loose cube on top of the block's far end, taken off first.
         let c: Vec<Cell> = vec![[0, 0, 4]];
-        let (order, level) = assembly_plan_order(l, &[a, b, c]);
+        let plan = figure_plan(LatticeKind::Cubic, &[a, b, c]);
+        let (order, level) = (plan.order, plan.level);
         assert_eq!(level, Some(1));
         assert_eq!(order.len(), 3);
         let at = |i: usize| order.iter().position(|&p| p == i).unwrap();
@@ -377,9 +506,152 @@ mod tests {
         ]
         .map(|[y, z]| [1, y, z])
         .to_vec();
-        let (order, level) = assembly_plan_order(l, &[ring_a, ring_b]);
-        assert_eq!((order.len(), level), (2, None));
+        let plan = figure_plan(LatticeKind::Cubic, &[ring_a, ring_b]);
+        assert_eq!((plan.order.len(), plan.level), (2, None));
+        assert_eq!((plan.moves, plan.locked), (None, Some(vec![0, 1])));
     }
+
+    /// The block with a closed channel of `the_3d_order_is_the_plan_reversed`
+    /// (B slides 2 along x, then leaves along y) and a loose cube on top.
+    fn channel_block() -> Vec<Vec<Cell>> {
+        let l = LatticeKind::Cubic.lattice();
+        let b: Vec<Cell> = vec![[1, 1, 1], [2, 1, 1], [1, 1, 2]];
+        let free = [[3, 1, 1], [4, 1, 1], [2, 1, 2], [3, 1, 2], [4, 1, 2]];
+        let window = [[3, 2, 1], [4, 2, 1], [3, 2, 2], [4, 2, 2]];
+        let a: Vec<Cell> = l
+            .cells_in_box([0, 0, 0], [5, 2, 3])
+            .into_iter()
+            .filter(|c| !b.contains(c) && !free.contains(c) && !window.contains(c))
+            .collect();
+        vec![a, b, vec![[0, 0, 4]]]
+    }
+
+    /// Plays the player's moves on the cells (an integer grid: the drawing's
+    /// unit is one cube) and checks each: along one axis by whole cubes;
+    /// every unit step free of the other pieces of its part (a removal's
+    /// sweep free of them for good) and, before a removal, of every piece;
+    /// after every move no two pieces overlap; at the end every part holds
+    /// one piece. Returns each piece's final offset.
+    fn replay(pieces: &[Vec<Cell>], moves: &[PlayedMove]) -> Vec<[i32; 3]> {
+        let n = pieces.len();
+        let mut off = vec![[0i32; 3]; n];
+        let mut part: Vec<usize> = vec![0; n];
+        let cells = |i: usize, off: &[[i32; 3]], extra: [i32; 3]| -> HashSet<[i32; 3]> {
+            pieces[i]
+                .iter()
+                .map(|c| [0, 1, 2].map(|j| c[j] + off[i][j] + extra[j]))
+                .collect()
+        };
+        for (k, m) in moves.iter().enumerate() {
+            let by: Vec<i32> = m.by.iter().map(|v| v.round() as i32).collect();
+            assert!(m
+                .by
+                .iter()
+                .zip(&by)
+                .all(|(a, b)| (a - *b as f64).abs() < 1e-9));
+            let axes: Vec<usize> = (0..3).filter(|&j| by[j] != 0).collect();
+            assert_eq!(axes.len(), 1, "move {k}: {m:?}");
+            let (axis, len) = (axes[0], by[axes[0]]);
+            let owner = part[m.pieces[0]];
+            assert!(m.pieces.iter().all(|&i| part[i] == owner), "move {k}");
+            let same: Vec<usize> = (0..n)
+                .filter(|i| part[*i] == owner && !m.pieces.contains(i))
+                .collect();
+            let reach = if m.removed { len.abs() + 40 } else { len.abs() };
+            for step in 1..=reach {
+                let mut d = [0; 3];
+                d[axis] = step * len.signum();
+                for &i in &m.pieces {
+                    let moved = cells(i, &off, d);
+                    for &o in &same {
+                        assert!(
+                            moved.is_disjoint(&cells(o, &off, [0; 3])),
+                            "move {k} step {step}"
+                        );
+                    }
+                }
+            }
+            for &i in &m.pieces {
+                off[i][axis] += len;
+            }
+            if m.removed {
+                let fresh = part.iter().max().unwrap_or(&0) + 1;
+                for &i in &m.pieces {
+                    part[i] = fresh;
+                }
+            }
+            for i in 0..n {
+                for j in i + 1..n {
+                    let (a, b) = (cells(i, &off, [0; 3]), cells(j, &off, [0; 3]));
+                    assert!(
+                        a.is_disjoint(&b),
+                        "after move {k}: pieces {i} and {j} overlap"
+                    );
+                }
+            }
+        }
+        let mut parts = part.clone();
+        parts.sort_unstable();
+        parts.dedup();
+        assert_eq!(parts.len(), n, "every part holds one piece at the end");
+        off
+    }
+
+    #[test]
+    fn the_player_plays_the_plan_in_its_order_and_groups() {
+        let pieces = channel_block();
+        let plan = figure_plan(LatticeKind::Cubic, &pieces);
+        let moves = plan.moves.expect("the block comes apart");
+        let limits = Limits::default();
+        let Ok(Disassembly::Apart(want)) =
+            disassemble(LatticeKind::Cubic.lattice(), &pieces, limits)
+        else {
+            panic!("the block comes apart");
+        };
+        // The same moves, groups and order as the plan; slides exactly as
+        // long, removals at least as long.
+        assert_eq!(moves.len(), want.moves.len());
+        for (got, m) in moves.iter().zip(&want.moves) {
+            assert_eq!((&got.pieces, got.removed), (&m.pieces, m.removed));
+            for j in 0..3 {
+                let (g, w) = (got.by[j], f64::from(m.by[j]));
+                if m.removed {
+                    assert!(g * w >= w * w && (w != 0.0 || g == 0.0), "{got:?} vs {m:?}");
+                } else {
+                    assert_eq!(g, w);
+                }
+            }
+        }
+        assert_eq!(plan.level, Some(want.level));
+        replay(&pieces, &moves);
+    }
+
+    /// Golden data: the player's plan of a small figure (a 2x1x2 slab, an
+    /// L lying on it, a cube in the L's corner) as `data` writes it.
+    #[test]
+    fn the_plan_in_the_player_data_is_golden() {
+        let pieces: Vec<Vec<Cell>> = vec![
+            vec![[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]],
+            vec![[0, 0, 1], [1, 0, 1], [0, 1, 1]],
+            vec![[1, 1, 1]],
+        ];
+        let plan = figure_plan(LatticeKind::Cubic, &pieces);
+        let moves = plan.moves.clone().expect("apart");
+        let json: Vec<Value> = moves
+            .iter()
+            .map(|m| json!({"pieces": m.pieces, "by": m.by, "removed": m.removed}))
+            .collect();
+        assert_eq!(serde_json::to_string(&json).unwrap(), GOLDEN_PLAN);
+        assert_eq!(plan.level, Some(1));
+        replay(&pieces, &moves);
+    }
+
+    /// The cube leaves first along +x (the plan's one step, one more as a
+    /// gap), then the L along -x, clear of the cube set down.
+    const GOLDEN_PLAN: &str = concat!(
+        r#"[{"by":[2.0,0.0,0.0],"pieces":[2],"removed":true},"#,
+        r#"{"by":[-3.0,0.0,0.0],"pieces":[1],"removed":true}]"#
+    );
 
     #[test]
     fn the_drawing_map_moves_every_cell_centre_onto_its_partner() {

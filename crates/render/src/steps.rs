@@ -1,12 +1,12 @@
 //! Instructions to print: for every figure one SVG sheet showing its
 //! assembly step by step, one piece added per step, in an order a person
-//! could lay the pieces down (`dissect_core::motion::assembly_order`).
+//! could lay the pieces down: for a 3D figure that comes apart, the reverse
+//! of its disassembly plan (`animation::figure_plan`), so no step puts a
+//! piece where a hand cannot; otherwise `dissect_core::motion::assembly_order`.
 //! Every step is the usual view (flat, or isometric assembled and exploded
 //! for `cubic`) of the pieces placed so far, in their own colours.
 
 use std::fmt::Write;
-
-use dissect_core::motion::assembly_order;
 
 use crate::drawing::{num, TextMode};
 use crate::view::{view, ViewOptions};
@@ -19,7 +19,7 @@ const CAPTION: f64 = 28.0;
 pub fn sheet(scene: &Scene, f: usize, columns: usize) -> String {
     let n = scene.piece_count();
     let cells: Vec<Vec<dissect_core::Cell>> = (0..n).map(|i| scene.cells(f, i).to_vec()).collect();
-    let order = assembly_order(scene.lattice().lattice(), &cells);
+    let order = crate::animation::figure_plan(scene.lattice(), &cells).order;
     // The same scale in every panel: the one of the whole figure.
     let whole = scene.subset(f, &order);
     let base = ViewOptions::default();
@@ -167,5 +167,26 @@ mod tests {
         assert!(panels[0].contains(&colour(2)) && !panels[0].contains(&colour(0)));
         // It is a picture resvg can draw.
         crate::png::svg_to_png(&svg.replace("<text", "<g").replace("</text>", "</g>")).unwrap();
+    }
+
+    /// A 2x2x1 slab, an L lying on it and a cube in the L's corner, the
+    /// cube given first: the plan takes the cube off first, then the L, so
+    /// the sheet adds the slab, the L, the cube: the plan in reverse.
+    #[test]
+    fn a_3d_sheet_adds_the_pieces_in_the_plan_reversed() {
+        let solution = r#"{"format": "dissection-solution/1", "lattice": "cubic", "mirror": true,
+          "figures": [{"name": "a", "pieces": [[[1,1,1]], [[0,0,1],[1,0,1],[0,1,1]],
+            [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]]}]}"#;
+        let scene = Scene::from_solution(solution, &[]).expect("a scene");
+        let cells: Vec<Vec<dissect_core::Cell>> =
+            (0..3).map(|i| scene.cells(0, i).to_vec()).collect();
+        let plan = crate::animation::figure_plan(scene.lattice(), &cells);
+        assert_eq!(plan.order, vec![2, 1, 0]);
+        let svg = sheet(&scene, 0, 3);
+        let steps: Vec<&str> = svg
+            .match_indices("add piece ")
+            .map(|(i, _)| &svg[i + 10..i + 11])
+            .collect();
+        assert_eq!(steps, ["C", "B", "A"]);
     }
 }

@@ -817,7 +817,7 @@ function finish(s) {
 
 // ------------------------------------------------------- solutions browser
 
-const RANKS = { variance: 'area variance', smallest: 'largest smallest piece', shapes: 'fewest shapes', symmetry: 'most symmetric', unique: 'fewest assemblies' };
+const RANKS = { variance: 'area variance', smallest: 'largest smallest piece', shapes: 'fewest shapes', symmetry: 'most symmetric', unique: 'fewest assemblies', level: 'highest disassembly level' };
 
 /** A solution's scores in words. */
 function scoresText(sc) {
@@ -1027,10 +1027,44 @@ function showResult() {
   showMotion(sol);
 }
 
+/**
+ * 3D answers: each figure's disassembly level (moves until the first piece
+ * comes free, from the server's plan), or a warning that it cannot be built
+ * (no straight moves take it apart: the pieces that lock) or was not decided.
+ */
+function showDisassembly(data) {
+  const el = $('#disassembly');
+  el.textContent = '';
+  el.hidden = data.dim !== 3;
+  if (el.hidden) return;
+  const label = document.createElement('span');
+  label.textContent = 'Disassembly:';
+  el.append(label);
+  data.figures.forEach((f, fi) => {
+    const item = document.createElement('span');
+    item.dataset.testid = `level-${fi}`;
+    if (f.level !== null && f.level !== undefined) {
+      const n = f.plan ? f.plan.length : 0;
+      item.textContent = `${f.name}: level ${f.level} (apart in ${n} move${n === 1 ? '' : 's'})`;
+      item.title = 'how many straight moves until the first piece comes free (1: a piece lifts off at once; higher: the pieces interlock)';
+    } else if (f.locked) {
+      item.className = 'cannot-build';
+      const names = f.locked.map((i) => data.pieces[i].label).join(', ');
+      item.textContent = `${f.name}: ⚠ cannot be built (pieces ${names} locked)`;
+      item.title = 'no sequence of straight moves takes this figure apart, so no hand can put it together';
+    } else {
+      item.className = 'partial';
+      item.textContent = `${f.name}: not decided (too many positions)`;
+    }
+    el.append(item);
+  });
+}
+
 /** The motion player (and for cubic the 3D view): its data is made by the server (dissect-render). */
 async function showMotion(sol) {
   const host = $('#motion');
   host.textContent = '';
+  $('#disassembly').hidden = true;
   try {
     const res = await fetch('/api/export/animation', {
       method: 'POST',
@@ -1041,6 +1075,7 @@ async function showMotion(sol) {
     if (!res.ok) throw new Error(data.error?.message || `HTTP ${res.status}`);
     if (state.result?.solution !== sol) return; // a newer result is shown
     state.player = createPlayer(host, data);
+    showDisassembly(data);
   } catch (e) {
     host.textContent = `motion view unavailable: ${e.message}`;
   }
@@ -1236,6 +1271,7 @@ async function init() {
 }
 
 window.studio = state; // for the end-to-end tests and the curious
+window.studioShowDisassembly = showDisassembly; // for the end-to-end tests
 // The editor's scale and plane origin of figure i (for the end-to-end tests).
 window.studioEditorView = (i) => { const { cs, lo } = editorView(state.figures[i]); return { cs, lo }; };
 window.studioPalette = PALETTE;

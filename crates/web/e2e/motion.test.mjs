@@ -5,7 +5,10 @@
 // cell centres computed from the solution's cells, not against the
 // server's motions), and the screenshot shows the piece's colour there. The
 // HTML page downloaded from the studio opens from file:// with the network
-// off and animates. The 3D view frames every figure whole.
+// off and animates. The 3D view frames every figure whole. A 3D answer plays
+// its disassembly plan (replayed here move by move from the drawn cells:
+// the plan's pieces move, along one axis, never through their part), and
+// the studio shows each figure's level or warns that it cannot be built.
 //
 // Needs DISSECT_URL (a running `dissect serve`) and DISSECT_DOCS (where the
 // screenshots go); .ci/steps/50-web-e2e.sh sets both.
@@ -70,8 +73,15 @@ const sortPts = (ps) => ps.map((p) => p.map((v) => Math.round(v * 1e6) / 1e6)).s
  * piece's cells are drawn where the solution puts them at t = 0 and t = 1,
  * and its centre is half way (lifted in 3D) at t = 0.5. Returns the state.
  */
-async function checkAt(frame, handle, solution, t) {
+async function checkAt(frame, handle, solution, when) {
   const lattice = solution.lattice;
+  // 'mid': half way (3D figures with a disassembly plan: half way through
+  // the carrying over, between the plans' moves).
+  const tl = await frame.evaluate((h) => { const p = new Function(`return ${h}`)(); p.setT(0); return p.state().timeline; }, handle);
+  const t = when === 'mid' ? (tl ? (tl.from_moves + tl.transit / 2) / tl.total : 0.5) : when;
+  const plans = await frame.evaluate((h) => new Function(`return ${h}`)().data.figures.map((f) => f.plan), handle);
+  /** Where the plan of figure f leaves piece i (the sum of its moves). */
+  const apart = (f, i) => (plans[f] || []).filter((m) => m.pieces.includes(i)).reduce((o, m) => add(o, m.by), [0, 0, 0]);
   await frame.evaluate(([h, v]) => new Function(`return ${h}`)().setT(v), [handle, t]);
   const got = await frame.evaluate(([h, sol, lat, src]) => {
     const centreOf = new Function(`return (${src})`)();
@@ -91,6 +101,10 @@ async function checkAt(frame, handle, solution, t) {
       a.forEach((p, k) => assert.ok(near(moved[i][k], p), `${lattice} t=0 piece ${i}: ${moved[i][k]} vs ${p}`));
     } else if (t === 1) {
       assert.deepEqual(sortPts(moved[i]), sortPts(b), `${lattice} t=1: piece ${i} lies on its cells in the other figure`);
+    } else if (tl) {
+      const mid = mean([add(mean(a), apart(st.from, i)), add(mean(b), apart(st.to, i))]);
+      mid[2] += st.lift;
+      assert.ok(near(mean(moved[i]), mid), `${lattice} mid-way piece ${i}: centre ${mean(moved[i])} vs ${mid}`);
     } else {
       const mid = mean([mean(a), mean(b)]);
       if (mid.length === 3) mid[2] += st.lift; // 3D pieces rise on their way
@@ -149,15 +163,20 @@ test('the studio moves the pieces of every lattice; t = 0, 0.5, 1 match the solu
     await page.evaluate(() => document.querySelector('#motion').player.setMode('motion'));
     const host = page.locator('#motion');
     await host.scrollIntoViewIfNeeded();
-    for (const t of [0, 0.5, 1]) {
+    for (const t of [0, 'mid', 1]) {
       const { moved } = await checkAt(page, studioPlayer, solution, t);
-      if (data.dim === 2 && t !== 0.5) await checkPixels(page, '#motion', data, moved);
-      const name = `motion-${ex.lattice}-t${Math.round(t * 100)}.png`;
-      const keep = (ex.lattice === 'square') || t === 0.5;
+      if (data.dim === 2 && t !== 'mid') await checkPixels(page, '#motion', data, moved);
+      const name = `motion-${ex.lattice}-t${t === 'mid' ? 50 : Math.round(t * 100)}.png`;
+      const keep = (ex.lattice === 'square') || t === 'mid';
       await host.screenshot({ path: path.join(keep ? DOCS : downloads, name) });
     }
-    // One at a time: half way, the pieces early in the assembly order have arrived, the last not yet left.
-    await page.evaluate(() => { const p = document.querySelector('#motion').player; p.setOneAtATime(true); p.setT(0.5); });
+    // One at a time: half way (through the carrying over, with plans), the pieces early in the assembly order have arrived, the last not yet left.
+    await page.evaluate(() => {
+      const p = document.querySelector('#motion').player;
+      p.setOneAtATime(true);
+      const tl = p.state().timeline;
+      p.setT(tl ? (tl.from_moves + tl.transit / 2) / tl.total : 0.5);
+    });
     const st = await page.evaluate(() => document.querySelector('#motion').player.state());
     const order = data.figures[st.to].order;
     assert.deepEqual([...order].sort((a, b) => a - b), data.pieces.map((_, i) => i), 'the order lists every piece once');
@@ -215,6 +234,131 @@ test('the 3D view shows every figure whole at its default camera', async () => {
   await page.locator('#motion').screenshot({ path: path.join(DOCS, 'motion-cubic-3d.png') });
 });
 
+/** The integer cells [x, y, z] piece i of figure `from` is drawn on now (the player's own map of its cell centres). */
+async function drawnCells(solution, from) {
+  return page.evaluate(([sol, f]) => {
+    const p = document.querySelector('#motion').player;
+    return sol.figures[f].pieces.map((cells, i) => cells.map((c) => p.map(i, [c[0] + 0.5, c[1] + 0.5, c[2] + 0.5]).map((v) => v - 0.5)));
+  }, [solution, from]);
+}
+
+test('a 3D answer plays its disassembly plan: moves in order and groups, none impossible, then the next figure goes together', async () => {
+  await page.goto(URL);
+  await page.waitForSelector('body[data-ready=true]');
+  await page.selectOption('[data-testid=example]', 'cube4-cavity-to-7x4x2');
+  await page.waitForFunction(() => window.studio.figures.length === 2 && window.studio.figures[1].cells.size === 56);
+  await page.click('[data-testid=solve]');
+  await page.waitForSelector('#result:not([hidden])', { timeout: 60_000 });
+  await page.waitForFunction(() => document.querySelector('#motion')?.player);
+  const solution = await page.evaluate(() => window.studio.result.solution);
+  const data = await page.evaluate(() => document.querySelector('#motion').player.data);
+  // The studio shows each figure's level.
+  await page.waitForSelector('#disassembly:not([hidden])');
+  for (let f = 0; f < 2; f++) {
+    const text = await page.textContent(`[data-testid=level-${f}]`);
+    assert.match(text, /: level [1-9]\d* \(apart in \d+ moves?\)$/, text);
+    assert.equal(data.figures[f].level >= 1, true);
+  }
+  await page.evaluate(() => { const p = document.querySelector('#motion').player; p.setMode('motion'); p.setFigures(0, 1); });
+  const tl = await page.evaluate(() => document.querySelector('#motion').player.state().timeline);
+  assert.ok(tl, 'cubic figures that come apart have a timeline');
+  assert.equal(tl.from_moves, data.figures[0].plan.length);
+  assert.equal(tl.to_moves, data.figures[1].plan.length);
+  assert.ok(tl.from_moves >= 1 && tl.to_moves >= 1);
+  const n = data.pieces.length;
+  const key = (c) => c.map((v) => Math.round(v)).join(',');
+  const asInts = (cells) => cells.map((p) => p.map((q) => q.map((v) => Math.round(v * 1e6) / 1e6)));
+  const setT = (t) => page.evaluate((v) => document.querySelector('#motion').player.setT(v), t);
+  /**
+   * Replays one figure's plan as the player draws it, a move at a time from
+   * t0 (dir 1: the first figure coming apart; dir -1: from the end back in
+   * time, the next figure coming apart, which is its assembly in reverse).
+   */
+  async function replay(f, plan, t0, dir) {
+    const part = new Array(n).fill(0);
+    let parts = 1;
+    await setT(t0);
+    let before = asInts(await drawnCells(solution, 0));
+    for (let k = 0; k < plan.length; k++) {
+      const m = plan[k];
+      await setT(t0 + dir * (k + 1) / tl.total);
+      const after = asInts(await drawnCells(solution, 0));
+      // Moved: exactly the move's pieces, all by the plan's displacement.
+      for (let i = 0; i < n; i++) {
+        const d = after[i][0].map((v, j) => v - before[i][0][j]);
+        const want = m.pieces.includes(i) ? m.by : [0, 0, 0];
+        assert.ok(near(d, want, 1e-6), `figure ${f} move ${k}: piece ${i} moved by ${d}, the plan says ${want}`);
+        after[i].forEach((c, q) => assert.ok(near(c, before[i][q].map((v, j) => v + d[j]), 1e-6), 'a move is a translation'));
+      }
+      assert.equal(m.by.filter((v) => v !== 0).length, 1, 'one axis');
+      assert.ok(m.by.every((v) => Number.isInteger(v)), 'whole cubes');
+      // Every unit step is free of the other pieces of its part.
+      const axis = m.by.findIndex((v) => v !== 0), len = Math.abs(m.by[axis]), sign = Math.sign(m.by[axis]);
+      const owner = part[m.pieces[0]];
+      assert.ok(m.pieces.every((i) => part[i] === owner), 'a group lies in one part');
+      const rest = new Set();
+      for (let i = 0; i < n; i++) if (!m.pieces.includes(i) && part[i] === owner) before[i].forEach((c) => rest.add(key(c)));
+      for (let step = 1; step <= len; step++) {
+        for (const i of m.pieces) {
+          for (const c of before[i]) {
+            const q = c.slice(); q[axis] += step * sign;
+            assert.ok(!rest.has(key(q)), `figure ${f} move ${k}: piece ${i} would pass through its part at step ${step}`);
+          }
+        }
+      }
+      if (m.removed) { m.pieces.forEach((i) => { part[i] = parts; }); parts++; }
+      // No two pieces overlap after any move.
+      const seen = new Map();
+      after.forEach((cells, i) => cells.forEach((c) => {
+        assert.ok(!seen.has(key(c)), `figure ${f} after move ${k}: pieces ${seen.get(key(c))} and ${i} overlap`);
+        seen.set(key(c), i);
+      }));
+      before = after;
+    }
+    assert.equal(new Set(part).size, n, `figure ${f}: every piece ends in a part of its own`);
+  }
+  await replay(0, data.figures[0].plan, 0, 1);
+  // The bar says which move plays.
+  await setT(0.5 / tl.total);
+  const step = await page.textContent('#motion [data-testid=plan-step]');
+  assert.match(step, new RegExp(`^${data.figures[0].name}: move 1 of ${tl.from_moves} \\(level \\d+\\): `), step);
+  await replay(1, data.figures[1].plan, 1, -1);
+  // At the end the pieces lie on the next figure's cells.
+  await checkAt(page, studioPlayer, solution, 1);
+  // Screenshots of the plan being played: coming apart, carried over, going together.
+  const host = page.locator('#motion');
+  await host.scrollIntoViewIfNeeded();
+  const shots = [[Math.max(1, tl.from_moves - 1), 'apart'], [tl.from_moves + tl.transit / 2, 'carry'], [tl.total - 1, 'together']];
+  for (const [u, name] of shots) {
+    await setT(u / tl.total);
+    await host.screenshot({ path: path.join(DOCS, `motion-cubic-plan-${name}.png`) });
+  }
+  // Play runs the whole plan to the end.
+  await page.evaluate(() => { const p = document.querySelector('#motion').player; p.setT(0); p.play(); });
+  await page.waitForFunction(() => Number(document.querySelector('#motion').dataset.t) === 1, null, { timeout: 30_000 });
+  assert.deepEqual(pageErrors, []);
+});
+
+test('the studio warns when a 3D answer cannot be built', async () => {
+  // Two linked voxel rings (no straight moves part them), twice.
+  const sq = [[0, 0], [1, 0], [2, 0], [0, 1], [2, 1], [0, 2], [1, 2], [2, 2]];
+  const a = sq.map(([x, y]) => [x, y, 1]);
+  const b = sq.map(([y, z]) => [1, y + 1, z]);
+  const rings = { format: 'dissection-solution/1', lattice: 'cubic', mirror: true,
+    figures: [{ name: 'rings', pieces: [a, b] }, { name: 'rings again', pieces: [a, b] }] };
+  await page.goto(URL);
+  await page.waitForSelector('body[data-ready=true]');
+  const data = await page.evaluate(async (sol) => {
+    const res = await fetch('/api/export/animation', { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify({ solution: sol }) });
+    return res.json();
+  }, rings);
+  assert.deepEqual(data.figures.map((f) => [f.level, f.locked, f.plan]), [[null, [0, 1], null], [null, [0, 1], null]]);
+  await page.evaluate((d) => { document.querySelector('#result').hidden = false; window.studioShowDisassembly(d); }, data);
+  const text = await page.textContent('[data-testid=level-0]');
+  assert.equal(text, 'rings: ⚠ cannot be built (pieces A, B locked)');
+  assert.equal(await page.getAttribute('[data-testid=level-0]', 'class'), 'cannot-build');
+});
+
 test('the downloaded page opens from file:// with the network off and animates', async () => {
   assert.deepEqual(Object.keys(saved), ['square', 'tri4', 'cubic', 'tri3', 'hex'], 'the first test saved the pages');
   const context = await browser.newContext({ viewport: { width: 1000, height: 800 }, offline: true });
@@ -233,7 +377,7 @@ test('the downloaded page opens from file:// with the network off and animates',
     await p.waitForSelector('body[data-ready=true]', { timeout: 10_000 });
     const handle = 'window.dissectPlayer';
     await p.evaluate(() => window.dissectPlayer.setMode('motion'));
-    for (const t of [0, 0.5, 1]) await checkAt(p, handle, solution, t);
+    for (const t of [0, 'mid', 1]) await checkAt(p, handle, solution, t);
     // Play runs the animation to the end.
     await p.evaluate(() => { window.dissectPlayer.setT(0); window.dissectPlayer.play(); });
     await p.waitForFunction(() => Number(document.querySelector('#player').dataset.t) > 0.2, null, { timeout: 10_000 });

@@ -206,15 +206,26 @@ impl<'r, 'a> Run<'r, 'a> {
     }
 
     /// The constructive dissection: every figure as the pivot, two ways of
-    /// keeping components; each one with fewer pieces is an improvement.
+    /// choosing motions and two of keeping components; each one with fewer
+    /// pieces is an improvement.
     fn constructive(&mut self) {
         let search = self.search;
-        'styles: for divisor in [2, 1] {
+        let choices = [
+            (greedy::Choice::Overlap, 2),
+            (greedy::Choice::Overlap, 1),
+            (greedy::Choice::Connected, 2),
+            (greedy::Choice::Connected, 1),
+        ];
+        'styles: for (choice, divisor) in choices {
             for pivot in 0..search.figures.len() {
                 if search.stopped() {
                     break 'styles;
                 }
-                let style = greedy::GreedyStyle { pivot, divisor };
+                let style = greedy::GreedyStyle {
+                    pivot,
+                    divisor,
+                    choice,
+                };
                 // The first dissection is always finished; later ones stop
                 // with the run.
                 let never = AtomicBool::new(false);

@@ -24,7 +24,24 @@ pub(crate) struct GreedyStyle {
     /// Keep the components of at least `largest / divisor` cells (1: only
     /// the largest ones).
     pub(crate) divisor: usize,
+    /// How each step's motion is chosen.
+    pub(crate) choice: Choice,
 }
+
+/// How a greedy step chooses the motion of a figure onto the pivot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Choice {
+    /// The most cells in common (the paper's largest common sub-figure).
+    Overlap,
+    /// Among the best [`CANDIDATES`] translations of every symmetry class
+    /// by overlap, the one whose common part has the largest connected
+    /// component (then the most cells): a large overlap in many small
+    /// components makes many small pieces.
+    Connected,
+}
+
+/// Translations per symmetry class that [`Choice::Connected`] compares.
+const CANDIDATES: usize = 8;
 
 /// A valid dissection of the problem's shapes (labels `0..k`, every piece
 /// connected and congruent in every figure).
@@ -51,7 +68,7 @@ pub(crate) fn greedy_until(
         if stop.load(Ordering::Relaxed) {
             return None;
         }
-        let (common, motions) = common_part(problem, pivot, &labels);
+        let (common, motions) = common_part_by(problem, pivot, &labels, style.choice);
         debug_assert!(!common.is_empty(), "a single cell always fits");
         let comps = components(&shapes[pivot], &common);
         let largest = comps.iter().map(Vec::len).max().unwrap_or(0);
@@ -85,6 +102,16 @@ pub(crate) fn common_part(
     pivot: usize,
     labels: &[Vec<u16>],
 ) -> (Vec<u32>, Vec<Option<(usize, Point)>>) {
+    common_part_by(problem, pivot, labels, Choice::Overlap)
+}
+
+/// [`common_part`], each motion chosen by `choice`.
+pub(crate) fn common_part_by(
+    problem: &Problem,
+    pivot: usize,
+    labels: &[Vec<u16>],
+    choice: Choice,
+) -> (Vec<u32>, Vec<Option<(usize, Point)>>) {
     let shapes = &problem.shapes;
     let nf = shapes.len();
     let mut common: Vec<u32> = (0..shapes[pivot].len() as u32)
@@ -92,7 +119,7 @@ pub(crate) fn common_part(
         .collect();
     let mut motions: Vec<Option<(usize, Point)>> = vec![None; nf];
     for f in (0..nf).filter(|&f| f != pivot) {
-        let (s, t) = best_motion(problem, pivot, &common, f, &labels[f]);
+        let (s, t) = best_motion(problem, pivot, &common, f, &labels[f], choice);
         let sym = problem.geo.syms[s];
         common.retain(|&c| {
             let p = sym.apply(shapes[pivot].point(c));
@@ -128,6 +155,7 @@ fn best_motion(
     cells: &[u32],
     to: usize,
     to_labels: &[u16],
+    choice: Choice,
 ) -> (usize, Point) {
     use rayon::prelude::*;
     let src = &problem.shapes[from];
@@ -151,29 +179,59 @@ fn best_motion(
     // figures every `stride`-th cell votes (the count of a translation then
     // estimates its overlap), which keeps a step linear in the cells.
     let stride = (cells.len() * free.len()).div_ceil(VOTE_PAIRS).max(1);
-    let best: Vec<(u32, usize, [i32; 3])> = reps
+    let take = match choice {
+        Choice::Overlap => 1,
+        Choice::Connected => CANDIDATES,
+    };
+    let best: Vec<Vec<(u32, usize, [i32; 3])>> = reps
         .par_iter()
-        .map(|&s| votes_of(problem, &source, &free, stride, s))
+        .map(|&s| votes_of(problem, &source, &free, stride, s, take))
         .collect();
     let mut top = (0u32, 0usize, [0i32; 3]);
-    for b in best {
+    for b in best.iter().flatten() {
         if b.0 > top.0 {
-            top = b;
+            top = *b;
+        }
+    }
+    if choice == Choice::Connected {
+        let all: Vec<(u32, usize, [i32; 3])> = best.iter().flatten().copied().collect();
+        let scored: Vec<((usize, usize), usize)> = all
+            .par_iter()
+            .enumerate()
+            .map(|(i, &(_, s, t))| {
+                let (sym, t) = (syms[s], Point::from(t));
+                let common: Vec<u32> = cells
+                    .iter()
+                    .copied()
+                    .filter(|&c| in_free(sym.apply(src.point(c)) + t))
+                    .collect();
+                let largest = components(src, &common).iter().map(Vec::len).max();
+                ((largest.unwrap_or(0), common.len()), i)
+            })
+            .collect();
+        // The largest component, then the most cells, then the first.
+        if let Some(&(_, i)) = scored
+            .iter()
+            .max_by_key(|(score, i)| (*score, std::cmp::Reverse(*i)))
+        {
+            top = all[i];
         }
     }
     (top.1, Point::from(top.2))
 }
 
-/// The translation carrying the most of `source` (every `stride`-th point)
-/// under symmetry `s` onto `free`: `(votes, s, translation)`, the smallest
-/// translation in index order on ties.
+/// The `take` translations carrying the most of `source` (every
+/// `stride`-th point) under symmetry `s` onto `free`: `(votes, s,
+/// translation)`, most votes first, the smallest translation in index
+/// order on ties.
 fn votes_of(
     problem: &Problem,
     source: &[Point],
     free: &[Point],
     stride: usize,
     s: usize,
-) -> (u32, usize, [i32; 3]) {
+    take: usize,
+) -> Vec<(u32, usize, [i32; 3])> {
     let m = problem.geo.modulus;
     let dim = problem.geo.dim;
     let sym = problem.geo.syms[s];
@@ -235,19 +293,39 @@ fn votes_of(
             votes[(uq + base) as usize] += 1;
         }
     }
-    let mut best = (0u32, s, [0i32; 3]);
-    for (idx, &v) in votes.iter().enumerate() {
-        if v > best.0 {
-            let mut rest = idx;
-            let mut t = [0i32; 3];
-            for d in 0..dim {
-                t[d] = ((rest % size[d]) as i32 + lo[d]) * m;
-                rest /= size[d];
-            }
-            best = (v, s, t);
+    let translation = |idx: usize| {
+        let mut rest = idx;
+        let mut t = [0i32; 3];
+        for d in 0..dim {
+            t[d] = ((rest % size[d]) as i32 + lo[d]) * m;
+            rest /= size[d];
         }
+        t
+    };
+    if take == 1 {
+        let mut best = (0u32, 0usize);
+        for (idx, &v) in votes.iter().enumerate() {
+            if v > best.0 {
+                best = (v, idx);
+            }
+        }
+        return vec![(best.0, s, translation(best.1))];
     }
-    best
+    let mut ranked: Vec<(std::cmp::Reverse<u32>, usize)> = votes
+        .iter()
+        .enumerate()
+        .filter(|(_, &v)| v > 0)
+        .map(|(idx, &v)| (std::cmp::Reverse(v), idx))
+        .collect();
+    if ranked.len() > take {
+        ranked.select_nth_unstable(take - 1);
+        ranked.truncate(take);
+    }
+    ranked.sort_unstable();
+    ranked
+        .into_iter()
+        .map(|(v, idx)| (v.0, s, translation(idx)))
+        .collect()
 }
 
 /// The symmetries `h` (indices) with `h(points) = points + c` for a lattice

@@ -5,7 +5,7 @@ use std::sync::Mutex;
 
 use crate::lattice::{Cell, LatticeKind};
 use crate::solver::candidate::{Candidate, Score};
-use crate::solver::greedy::{greedy, GreedyStyle};
+use crate::solver::greedy::{greedy, Choice, GreedyStyle};
 use crate::solver::{Level, Options, Repair, Search};
 use crate::tests::util::{candidate, cells_by_label, verified};
 
@@ -36,12 +36,19 @@ fn the_constructive_dissection_is_always_valid() {
         let (figs, problem, _) = candidate(*lattice, true, figures);
         for pivot in 0..figs.len() {
             for divisor in [1, 2] {
-                let cand = greedy(&problem, GreedyStyle { pivot, divisor });
-                assert!(
-                    verified(*lattice, true, &figs, &cand),
-                    "{lattice} {figures:?} pivot {pivot} divisor {divisor}: {:?}",
-                    cells_by_label(&figs, &cand)
-                );
+                for choice in [Choice::Overlap, Choice::Connected] {
+                    let style = GreedyStyle {
+                        pivot,
+                        divisor,
+                        choice,
+                    };
+                    let cand = greedy(&problem, style);
+                    assert!(
+                        verified(*lattice, true, &figs, &cand),
+                        "{lattice} {figures:?} {style:?}: {:?}",
+                        cells_by_label(&figs, &cand)
+                    );
+                }
             }
         }
     }
@@ -57,6 +64,7 @@ fn the_constructive_dissection_keeps_common_parts_whole() {
         GreedyStyle {
             pivot: 0,
             divisor: 1,
+            choice: Choice::Overlap,
         },
     );
     assert_eq!(cand.k, 1);
@@ -71,10 +79,44 @@ fn the_constructive_dissection_keeps_common_parts_whole() {
         GreedyStyle {
             pivot: 0,
             divisor: 1,
+            choice: Choice::Overlap,
         },
     );
     assert_eq!(cand.k, 2, "two 4×2 halves");
     assert!(verified(LatticeKind::Square, true, &figs, &cand));
+}
+
+/// The connected choice takes the motion whose common part has the largest
+/// component among its candidates, and the overlap choice's motion is one
+/// of them: its largest component is never smaller, on 2D and 3D figures.
+#[test]
+fn the_connected_choice_keeps_the_largest_component() {
+    use crate::solver::greedy::{common_part_by, components, FREE};
+    let cases: &[(LatticeKind, &[&str])] = &[
+        (
+            LatticeKind::Square,
+            &["AAAA.|A..AA|AAAAA|..A..", "AAAAAAA|AAAAAA"],
+        ),
+        (
+            LatticeKind::Square,
+            &["A.A.A|AAAAA|A.A.A", "AAAAA|AAAAA|A...."],
+        ),
+        (
+            LatticeKind::Cubic,
+            &["AAA|A.A|AAA/A..|...|..A", "AAAAA|AAAAA"],
+        ),
+    ];
+    for (lattice, figures) in cases {
+        let (_, problem, _) = candidate(*lattice, true, figures);
+        let labels: Vec<Vec<u16>> = problem.shapes.iter().map(|s| vec![FREE; s.len()]).collect();
+        let largest = |choice| {
+            let (common, _) = common_part_by(&problem, 0, &labels, choice);
+            let comps = components(&problem.shapes[0], &common);
+            comps.iter().map(Vec::len).max().unwrap_or(0)
+        };
+        let (overlap, connected) = (largest(Choice::Overlap), largest(Choice::Connected));
+        assert!(connected >= overlap, "{figures:?}: {connected} < {overlap}");
+    }
 }
 
 /// Checks what the repairer is handed and returns a fixed answer.

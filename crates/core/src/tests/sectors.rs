@@ -6,7 +6,7 @@ use std::sync::atomic::AtomicBool;
 use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind};
 use crate::solver::candidate::Problem;
-use crate::solver::greedy::{greedy, GreedyStyle};
+use crate::solver::greedy::{greedy, Choice, GreedyStyle};
 use crate::solver::sectors::{dissect, plans, Plan};
 use crate::solver::shape::Shape;
 use crate::solver::Repair;
@@ -152,6 +152,7 @@ impl Repair for Constructive {
             GreedyStyle {
                 pivot: 0,
                 divisor: 1,
+                choice: Choice::Overlap,
             },
         );
         Some(cells_by_label(&figs, &cand))
