@@ -45,6 +45,8 @@ pub enum Command {
     Disassemble(crate::disassemble::DisassembleArgs),
     /// Count every dissection with the fewest pieces (or --pieces K), complete, up to the first figure's symmetries.
     Enumerate(crate::enumerate::EnumerateArgs),
+    /// Check the certificates of a --certificate folder (every kK.cnf against its kK.drat) with the independent checker.
+    CheckProof(crate::certificate::CheckProofArgs),
 }
 
 /// A thread count from 0 (one per core) to the engine's
@@ -133,6 +135,11 @@ pub struct SolveArgs {
     /// Give up after trying this many pieces.
     #[arg(long, value_name = "K", value_parser = whole_usize::<0>)]
     pub max_pieces: Option<usize>,
+    /// For every "no K-piece dissection" the exact search proves, write
+    /// DIR/kK.cnf, DIR/kK.drat (its DRAT proof) and DIR/README.txt; check
+    /// them with `dissect check-proof DIR`.
+    #[arg(long, value_name = "DIR", conflicts_with = "no_prove")]
+    pub certificate: Option<std::path::PathBuf>,
     /// Weight of the area-balance term at level 1 (paper: 0.5; 0 turns it off).
     #[arg(long, default_value_t = defaults().area_weight, value_name = "X")]
     pub area_weight: f64,
@@ -310,6 +317,7 @@ impl SolveArgs {
             idle_rounds: self.rounds,
             solutions: self.solutions,
             rank: self.rank.unwrap_or_default(),
+            certify: self.certificate.is_some(),
             ..dissect_engine::RunConfig::default()
         }
     }

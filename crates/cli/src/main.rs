@@ -2,6 +2,7 @@
 
 mod args;
 mod assemblies;
+mod certificate;
 mod disassemble;
 mod enumerate;
 mod info;
@@ -57,6 +58,7 @@ fn main() -> ExitCode {
         args::Command::Assemblies(a) => assemblies::run(a),
         args::Command::Disassemble(a) => disassemble::run(a),
         args::Command::Enumerate(a) => enumerate::run(a),
+        args::Command::CheckProof(a) => certificate::check(a),
     };
     match result {
         Ok(Status::Ok) => ExitCode::SUCCESS,

@@ -35,6 +35,11 @@ pub struct BoundArgs {
     /// dissection exists). For timing other SAT solvers.
     #[arg(long, value_name = "FILE", requires = "max_pieces")]
     pub dimacs: Option<PathBuf>,
+    /// For every "no K-piece dissection" proved by SAT, write DIR/kK.cnf
+    /// (the formula), DIR/kK.drat (its DRAT proof of unsatisfiability) and
+    /// DIR/README.txt; check them with `dissect check-proof DIR`.
+    #[arg(long, value_name = "DIR", conflicts_with = "dimacs")]
+    pub certificate: Option<PathBuf>,
     /// The figures (text files, see FORMAT.md).
     #[arg(required = true, num_args = 2.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
@@ -45,15 +50,26 @@ pub struct Lines {
     pub quiet: bool,
     pub start: Instant,
     pub names: Vec<String>,
+    /// Writes the certificates (`--certificate`).
+    pub certificates: Option<crate::certificate::Writer>,
 }
 
 impl ExactObserver for Lines {
     fn on_event(&self, event: &ExactEvent) {
+        if let Some(w) = &self.certificates {
+            w.on_event(event);
+        }
         if self.quiet {
             return;
         }
         let t = self.start.elapsed().as_secs_f64();
         match event {
+            ExactEvent::Certified(c) => eprintln!(
+                "[exact {t:6.1} s] certificate k{}: {} clauses, {} lemmas",
+                c.pieces,
+                c.clauses,
+                c.lemmas()
+            ),
             ExactEvent::CheapBound(b) => eprintln!(
                 "[exact {t:6.1} s] cheap bound: {} ({})",
                 b.value,
@@ -126,12 +142,23 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         mirror: !args.no_mirror,
         max_pieces: args.max_pieces,
         time_limit: args.time_limit.unwrap_or_default(),
+        certify: args.certificate.is_some(),
     };
     let names = names(&args.figures);
+    let certificates = match &args.certificate {
+        Some(dir) => Some(crate::certificate::Writer::new(
+            dir,
+            &args.figures,
+            &args.lattice.to_string(),
+            !args.no_mirror && args.lattice.lattice().supports_mirror(),
+        )?),
+        None => None,
+    };
     let observer = Lines {
         quiet: args.quiet,
         start: Instant::now(),
         names: names.clone(),
+        certificates,
     };
     let report = dissect_engine::bound(&figures, &names, &config, crate::stop::flag(), &observer)
         .map_err(|e| match e {
@@ -159,6 +186,9 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         );
     } else if report.stopped() {
         println!("stopped (time limit or Ctrl-C); the bound below is the best proved");
+    }
+    if let Some(w) = &observer.certificates {
+        println!("{}", w.summary()?);
     }
     println!(
         "lower bound: {} ({})",

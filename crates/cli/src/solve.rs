@@ -29,10 +29,15 @@ struct Display {
     start: Instant,
     progress: Progress,
     exact: Option<crate::prove::Lines>,
+    /// Writes the certificates (`--certificate`).
+    certificates: Option<crate::certificate::Writer>,
 }
 
 impl EngineObserver for Display {
     fn on_event(&self, event: &EngineEvent<'_>) {
+        if let (EngineEvent::Exact(e), Some(w)) = (event, &self.certificates) {
+            w.on_event(e);
+        }
         if self.quiet {
             return;
         }
@@ -70,6 +75,33 @@ impl EngineObserver for Display {
     }
 }
 
+/// The progress display of `solve`, with the certificate writer of
+/// `--certificate`.
+fn display(args: &SolveArgs, names: &[String], start: Instant) -> Result<Display> {
+    let explicit_prove = args.prove || args.exact;
+    Ok(Display {
+        quiet: args.quiet,
+        paper: args.paper,
+        start,
+        progress: Progress::new(args.quiet),
+        exact: explicit_prove.then(|| crate::prove::Lines {
+            quiet: args.quiet,
+            start,
+            names: names.to_vec(),
+            certificates: None,
+        }),
+        certificates: match &args.certificate {
+            Some(dir) => Some(crate::certificate::Writer::new(
+                dir,
+                &args.figures,
+                &args.lattice.to_string(),
+                !args.no_mirror && args.lattice.lattice().supports_mirror(),
+            )?),
+            None => None,
+        },
+    })
+}
+
 pub fn run(args: SolveArgs) -> Result<Status> {
     let figures = input::figures(&args.figures, args.lattice)?;
     input::check_equal_areas(&args.figures, &figures)?;
@@ -90,19 +122,14 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     let stop = crate::stop::flag();
     let start = Instant::now();
     let explicit_prove = args.prove || args.exact;
-    let display = Display {
-        quiet: args.quiet,
-        paper: args.paper,
-        start,
-        progress: Progress::new(args.quiet),
-        exact: explicit_prove.then(|| crate::prove::Lines {
-            quiet: args.quiet,
-            start,
-            names: names.clone(),
-        }),
-    };
+    let display = display(&args, &names, start)?;
     let report = dissect_engine::run(&figures, &names, &options, stop, &display);
     display.progress.finish();
+    // The certificates' line on stderr (stdout's last line stays the verdict).
+    let certificates = display
+        .certificates
+        .as_ref()
+        .map_or(Ok(()), |w| w.summary().map(|l| progress::stderr_line(&l)));
     let report = match report {
         Ok(r) => r,
         Err(e @ EngineError::Figures(_)) => return Err(InputError(e.to_string()).into()),
@@ -131,6 +158,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
             report.lower_bound.value,
             report.lower_bound.reason,
         ));
+        certificates?;
         return Ok(Status::NotFound);
     };
 
@@ -206,6 +234,7 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     }
     written?;
     others?;
+    certificates?;
 
     #[cfg(feature = "render")]
     #[cfg(feature = "render")]

@@ -34,6 +34,9 @@ pub struct BoundConfig {
     pub max_pieces: Option<usize>,
     /// How long the bound may take.
     pub time_limit: TimeLimit,
+    /// Record every refutation's formula and DRAT proof (sent as
+    /// [`ExactEvent::Certified`]).
+    pub certify: bool,
 }
 
 impl Default for BoundConfig {
@@ -42,6 +45,7 @@ impl Default for BoundConfig {
             mirror: true,
             max_pieces: None,
             time_limit: TimeLimit::NONE,
+            certify: false,
         }
     }
 }
@@ -97,6 +101,7 @@ pub fn bound(
         mode: Mode::LowerBound,
         deadline,
         max_pieces: config.max_pieces,
+        certify: config.certify,
         ..ExactOptions::default()
     };
     let cap = options.max_encoding_bytes;

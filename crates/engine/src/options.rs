@@ -91,6 +91,10 @@ pub struct RunConfig {
     /// The designer's constraints every answer honours (`--keep N:FILE`,
     /// `--min-piece`, `--max-piece`, `--checkerboard`, `--symmetry-weight`).
     pub constraints: Constraints,
+    /// Record every refutation of the exact search with its formula and
+    /// DRAT proof (`--certificate`, sent as
+    /// [`dissect_exact::ExactEvent::Certified`]).
+    pub certify: bool,
 }
 
 impl Default for RunConfig {
@@ -118,6 +122,7 @@ impl Default for RunConfig {
             solutions: 1,
             rank: Rank::default(),
             constraints: Constraints::none(),
+            certify: false,
         }
     }
 }

@@ -14,6 +14,9 @@
 //!   gets clauses that forbid the split, so a model that survives is a real
 //!   K-piece dissection (and is checked by `dissect_core::verify` before it
 //!   is reported).
+//! * Certificates ([`certificate`], with [`ExactOptions::certify`]): every
+//!   refutation comes with the formula and batsat's DRAT proof, which the
+//!   independent checker `dissect-proof` replays.
 //! * [`enumerate::enumerate`] counts every dissection with K pieces (the
 //!   minimum, proved first, unless K is given): SAT again and again, each
 //!   model verified and then forbidden by a blocking clause over the cut of
@@ -27,6 +30,7 @@
 //! `sat_backend` names it.
 
 pub mod bound;
+pub mod certificate;
 pub(crate) mod component_count;
 pub(crate) mod connectivity_cut;
 pub(crate) mod constraint_encoding;
@@ -42,6 +46,7 @@ pub(crate) mod sat_backend;
 pub mod search;
 
 pub use bound::{cheap_bound, Bound, Reason};
+pub use certificate::Certificate;
 pub use enumerate::{enumerate, EnumerateEvent, EnumerateObserver, EnumerateOptions, Enumeration};
 pub use motion::MotionSet;
 pub use placement_encoding::EncodingSize;

@@ -1,6 +1,16 @@
 //! The SAT backend: the pure-Rust `batsat` crate (a MiniSat descendant). The
 //! only module that names the backend, so another one can replace it here
 //! alone.
+//!
+//! Proofs: when asked ([`Sat::record_proof`]), the solver's learnt clauses
+//! and deletions (which batsat reports through its callbacks) are kept as a
+//! DRAT proof. Every learnt clause of conflict analysis (with its
+//! minimisation) is a RUP lemma of the clauses present, and batsat does no
+//! other inprocessing (it only drops satisfied clauses, which a proof may
+//! keep), so the lemmas, ended by the empty clause, refute the recorded
+//! formula; clauses added between solves only make the formula larger, so
+//! earlier lemmas stay RUP in it. `dissect-proof` checks this claim on every
+//! certificate instead of trusting it.
 
 use batsat::{lbool, ClauseKind, Lit, SolverInterface, SolverOpts};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -17,12 +27,34 @@ struct StopCheck<'a> {
     conflicts: u64,
     /// Give up once `conflicts` reaches this.
     conflict_limit: Option<u64>,
+    /// The DRAT proof so far (learnt clauses, `d` deletions), when recording.
+    proof: Option<String>,
+}
+
+/// Appends `c` to a DRAT text as one line (`prefix` is `""` or `"d "`).
+fn drat_line(proof: &mut String, prefix: &str, c: &[Lit]) {
+    use std::fmt::Write;
+    proof.push_str(prefix);
+    for lit in c {
+        let v = lit.var().idx() as i64 + 1;
+        let _ = write!(proof, "{} ", if lit.sign() { v } else { -v });
+    }
+    proof.push_str("0\n");
 }
 
 impl batsat::Callbacks for StopCheck<'_> {
-    fn on_new_clause(&mut self, _c: &[Lit], kind: ClauseKind) {
+    fn on_new_clause(&mut self, c: &[Lit], kind: ClauseKind) {
         if kind == ClauseKind::Learnt {
             self.conflicts += 1;
+            if let Some(proof) = &mut self.proof {
+                drat_line(proof, "", c);
+            }
+        }
+    }
+
+    fn on_delete_clause(&mut self, c: &[Lit]) {
+        if let Some(proof) = &mut self.proof {
+            drat_line(proof, "d ", c);
         }
     }
 
@@ -59,6 +91,7 @@ impl<'a> Sat<'a> {
                 upper,
                 conflicts: 0,
                 conflict_limit: None,
+                proof: None,
             },
         );
         Sat {
@@ -73,6 +106,22 @@ impl<'a> Sat<'a> {
     /// Keeps a copy of every clause added from now on, for [`Sat::dimacs`].
     pub fn record(&mut self) {
         self.recorded.get_or_insert_with(String::new);
+    }
+
+    /// Keeps the solver's learnt clauses and deletions from now on as a DRAT
+    /// proof, for [`Sat::proof`]; call it with [`Sat::record`], before the
+    /// first clause.
+    pub fn record_proof(&mut self) {
+        self.solver.cb_mut().proof.get_or_insert_with(String::new);
+    }
+
+    /// The DRAT proof recorded since [`Sat::record_proof`], ended by the
+    /// empty clause: after a solve that answered "unsatisfiable" it refutes
+    /// [`Sat::dimacs`].
+    pub fn proof(&self) -> Option<String> {
+        let mut text = self.solver.cb().proof.clone()?;
+        text.push_str("0\n");
+        Some(text)
     }
 
     /// The clauses recorded since [`Sat::record`] as a DIMACS CNF (the header

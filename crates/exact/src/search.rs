@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 use dissect_core::{Cell, Figure};
 
 use crate::bound::{cheap, cheap_with, Bound, Cheap, Reason};
+use crate::certificate::Certificate;
 use crate::connectivity_cut::cuts;
 use crate::incompatible_clique::Incompatibility;
 use crate::instance::Instance;
@@ -64,6 +65,11 @@ pub struct ExactOptions {
     /// The designer's constraints every dissection found must honour
     /// (`None`: none). Lower bounds are then bounds under the constraints.
     pub constraints: Option<dissect_puzzle::Constraints>,
+    /// Record every refuted formula and its DRAT proof and report them as
+    /// [`ExactEvent::Certified`]; the cheap bound `L` (when at least 2) is
+    /// then also refuted by SAT at `L - 1` pieces, so that it has a
+    /// certificate when the encoding refutes it.
+    pub certify: bool,
 }
 
 /// The default of [`ExactOptions::max_encoding_bytes`]: 512 MiB.
@@ -105,6 +111,7 @@ impl Default for ExactOptions {
             restricted_conflicts: None,
             max_encoding_bytes: DEFAULT_MAX_ENCODING_BYTES,
             constraints: None,
+            certify: false,
         }
     }
 }
@@ -160,6 +167,10 @@ pub enum ExactEvent {
         /// Whether it ran out of time (else it was unsatisfiable).
         timed_out: bool,
     },
+    /// A refutation's certificate (with [`ExactOptions::certify`]): sent
+    /// just before the [`ExactEvent::Refuted`] it proves, or alone for the
+    /// cheap bound's `L - 1`.
+    Certified(Certificate),
     /// A verified dissection into `pieces` pieces.
     Found {
         /// Its piece count.
@@ -208,6 +219,7 @@ enum Pass {
     Unsat {
         cuts: usize,
         seconds: f64,
+        certificate: Option<Box<Certificate>>,
     },
     Found(Vec<Vec<Vec<usize>>>),
     /// Stopped, past the deadline or out of conflicts.
@@ -227,6 +239,7 @@ struct Context<'a> {
     eager_connectivity: bool,
     max_bytes: u64,
     constraints: Option<&'a dissect_puzzle::Constraints>,
+    certify: bool,
     /// Conflicts spent so far.
     spent: std::cell::Cell<u64>,
 }
@@ -275,6 +288,34 @@ impl Context<'_> {
         None
     }
 
+    /// With certificates, the cheap bound `bound` (at least 2) refuted by
+    /// SAT at `bound - 1` pieces, its certificate sent as
+    /// [`ExactEvent::Certified`]; nothing when the encoding does not refute
+    /// it in time (the cheap bound still holds, uncertified). When the
+    /// encoding is too large and the bound is an incompatible clique's, the
+    /// certificate holds the clique's clauses only ([`Certificate::clique_only`]).
+    fn certify_cheap(
+        &self,
+        bound: usize,
+        deadline: Option<Instant>,
+        left: &dyn Fn() -> Option<u64>,
+    ) {
+        if bound < 2 {
+            return;
+        }
+        let certificate = match self.pass(bound - 1, MotionSet::All, deadline, left()) {
+            Pass::Unsat { certificate, .. } => certificate,
+            // The full encoding would not fit: the clique's clauses alone.
+            Pass::TooLarge(_) if self.clique.len() >= bound => {
+                crate::certificate::clique(bound - 1, self.clique.len(), self.stop)
+            }
+            _ => None,
+        };
+        if let Some(c) = certificate {
+            self.observer.on_event(&ExactEvent::Certified(*c));
+        }
+    }
+
     fn pass(
         &self,
         k: usize,
@@ -286,7 +327,7 @@ impl Context<'_> {
         let interrupted =
             || self.stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
         let estimate = estimate(self.inst, k, set, self.clique.len(), self.incompat);
-        let bytes = estimate.bytes(false);
+        let bytes = estimate.bytes(self.certify);
         if bytes > self.max_bytes {
             self.observer.on_event(&ExactEvent::TooLarge {
                 pieces: k,
@@ -296,6 +337,10 @@ impl Context<'_> {
             return Pass::TooLarge(bytes);
         }
         let mut sat = Sat::new(self.stop, Some((self.upper, k)));
+        if self.certify && set == MotionSet::All {
+            sat.record();
+            sat.record_proof();
+        }
         sat.set_conflict_limit(conflicts);
         let spend = |sat: &Sat<'_>| self.spent.set(self.spent.get() + sat.conflicts());
         let Some(enc) = encode(
@@ -344,6 +389,7 @@ impl Context<'_> {
                     return Pass::Unsat {
                         cuts: total,
                         seconds: start.elapsed().as_secs_f64(),
+                        certificate: crate::certificate::of_sat(&sat, k, total, connected_encoding),
                     }
                 }
                 Some(true) => {
@@ -449,6 +495,7 @@ pub fn search(
         eager_connectivity: options.eager_connectivity,
         max_bytes: options.max_encoding_bytes,
         constraints: options.constraints.as_ref(),
+        certify: options.certify,
         spent: std::cell::Cell::new(0),
     };
     let left = || {
@@ -456,6 +503,9 @@ pub fn search(
             .conflict_budget
             .map(|b| b.saturating_sub(ctx.spent.get()))
     };
+    if options.certify {
+        ctx.certify_cheap(outcome.lower_bound.value, options.deadline, &left);
+    }
     let cells = inst.shapes[0].len();
     let max = options.max_pieces.unwrap_or(cells).min(cells);
     let mut k = outcome.lower_bound.value;
@@ -482,7 +532,14 @@ pub fn search(
             Some(p) => Some(p),
             None => match ctx.pass(k, MotionSet::All, options.deadline, left()) {
                 Pass::Found(p) => Some(p),
-                Pass::Unsat { cuts, seconds } => {
+                Pass::Unsat {
+                    cuts,
+                    seconds,
+                    certificate,
+                } => {
+                    if let Some(c) = certificate {
+                        observer.on_event(&ExactEvent::Certified(*c));
+                    }
                     outcome.lower_bound = Bound {
                         value: k + 1,
                         reason: Reason::Sat {

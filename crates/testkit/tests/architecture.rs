@@ -56,11 +56,11 @@ const IO_AND_PRINTING: &[&str] = &[
     "dbg!(",
 ];
 
-/// `dissect-core`, `-engine`, `-exact`, `-puzzle` and `-render` do no I/O
-/// and never print: strings and bytes in, strings and bytes out.
+/// `dissect-core`, `-engine`, `-exact`, `-puzzle`, `-render` and `-proof`
+/// do no I/O and never print: strings and bytes in, strings and bytes out.
 #[test]
 fn the_libraries_do_no_io_and_never_print() {
-    for krate in ["core", "engine", "exact", "puzzle", "render"] {
+    for krate in ["core", "engine", "exact", "puzzle", "render", "proof"] {
         for (path, code) in sources(&crates().join(krate).join("src")) {
             let bad = uses(&code, IO_AND_PRINTING);
             assert!(bad.is_empty(), "{}: {bad:?}", path.display());
@@ -107,6 +107,31 @@ fn only_the_sat_backend_module_names_batsat() {
             let bad = uses(&code, &["batsat"]);
             assert!(bad.is_empty(), "{}: {bad:?}", path.display());
         }
+    }
+}
+
+/// The certificate checker (`dissect-proof`) is independent of what it
+/// checks: it depends on no other crate of the workspace (so shares no code
+/// with the encoder or the SAT solver) and on no SAT solver.
+#[test]
+fn the_proof_checker_shares_no_code_with_the_encoder_or_the_solver() {
+    let manifest = std::fs::read_to_string(crates().join("proof/Cargo.toml")).expect("manifest");
+    let deps = manifest
+        .split("[dependencies]")
+        .nth(1)
+        .expect("a [dependencies] table")
+        .split("\n[")
+        .next()
+        .unwrap_or("");
+    let names: Vec<&str> = deps
+        .lines()
+        .filter_map(|l| l.split(['=', ' ', '.']).next())
+        .filter(|n| !n.is_empty())
+        .collect();
+    assert_eq!(names, ["thiserror"], "dissect-proof depends on {names:?}");
+    for (path, code) in sources(&crates().join("proof").join("src")) {
+        let bad = uses(&code, &["dissect_", "batsat"]);
+        assert!(bad.is_empty(), "{}: {bad:?}", path.display());
     }
 }
 

@@ -366,6 +366,7 @@ impl<'r> Plan<'r> {
                 .then_some(EXACT_BUDGET),
             max_encoding_bytes: EXACT_MAX_BYTES,
             constraints: (!config.constraints.is_empty()).then(|| config.constraints.clone()),
+            certify: config.certify,
             ..ExactOptions::default()
         }
     }

@@ -1,0 +1,144 @@
+//! `--certificate DIR` of `bound` and `solve`, and `dissect check-proof
+//! DIR`: the certificates written verify; a formula or proof with a clause
+//! removed fails; a corrupted file is bad input naming its file and line.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+/// A 5×4 rectangle with a 2×2 hole: no 2-piece dissection into the 4×4
+/// square (SAT refutes it).
+const HOLE: &str = "#####\n#..##\n#..##\n#####\n";
+const SQUARE_4: &str = "####\n####\n####\n####\n";
+
+fn dissect(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_dissect"))
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .expect("dissect runs")
+}
+
+fn text(o: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    )
+}
+
+fn setup() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("a.txt"), HOLE).unwrap();
+    std::fs::write(dir.path().join("b.txt"), SQUARE_4).unwrap();
+    dir
+}
+
+#[test]
+fn bound_writes_certificates_that_check_proof_verifies() {
+    let dir = setup();
+    let out = dissect(
+        dir.path(),
+        &[
+            "bound",
+            "-q",
+            "--max-pieces",
+            "2",
+            "--certificate",
+            "cert",
+            "a.txt",
+            "b.txt",
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out));
+    assert!(
+        text(&out).contains("certificates: k1, k2 in cert"),
+        "{}",
+        text(&out)
+    );
+    let cert = dir.path().join("cert");
+    let readme = std::fs::read_to_string(cert.join("README.txt")).unwrap();
+    assert!(
+        readme.contains("k2.cnf, k2.drat: no dissection into at most 2 pieces"),
+        "{readme}"
+    );
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert!(out.status.success(), "{}", text(&out));
+    let last = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .last()
+        .unwrap_or("")
+        .to_string();
+    assert_eq!(last, "verified: 2 certificates (k1, k2)");
+
+    // The proof of k2 without its lemmas (the empty clause alone) fails.
+    std::fs::write(cert.join("k2.drat"), "0\n").unwrap();
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(text(&out).contains("k2: FAILED"), "{}", text(&out));
+    assert!(
+        text(&out).contains("k2.drat: proof line 1"),
+        "{}",
+        text(&out)
+    );
+}
+
+#[test]
+fn a_formula_with_clauses_removed_fails_and_corruption_names_file_and_line() {
+    let dir = setup();
+    let out = dissect(
+        dir.path(),
+        &[
+            "solve",
+            "--exact",
+            "-q",
+            "--certificate",
+            "cert",
+            "a.txt",
+            "b.txt",
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out));
+    let cert = dir.path().join("cert");
+    let cnf = std::fs::read_to_string(cert.join("k2.cnf")).expect("k2 certified");
+    assert!(dissect(dir.path(), &["check-proof", "cert"])
+        .status
+        .success());
+
+    // Keep the header true but drop the clauses that place each cell in
+    // some piece: the formula is satisfiable and no proof can refute it.
+    let mut lines: Vec<String> = cnf.lines().map(String::from).collect();
+    let keep: Vec<String> = lines[1..]
+        .iter()
+        .filter(|l| l.split_whitespace().any(|t| t.starts_with('-')))
+        .cloned()
+        .collect();
+    let header: Vec<&str> = lines[0].split_whitespace().collect();
+    lines = vec![format!("p cnf {} {}", header[2], keep.len())];
+    lines.extend(keep);
+    std::fs::write(cert.join("k2.cnf"), lines.join("\n") + "\n").unwrap();
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(text(&out).contains("k2: FAILED"), "{}", text(&out));
+
+    // A corrupted proof: bad input, the file and line named.
+    std::fs::write(cert.join("k2.cnf"), &cnf).unwrap();
+    std::fs::write(cert.join("k2.drat"), "1 2 0\n3 x 0\n0\n").unwrap();
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(
+        text(&out).contains("k2.drat: proof line 2: `x` is not a literal"),
+        "{}",
+        text(&out)
+    );
+    // A missing proof, and a folder without certificates.
+    std::fs::remove_file(cert.join("k2.drat")).unwrap();
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(
+        text(&out).contains("no proof beside k2.cnf"),
+        "{}",
+        text(&out)
+    );
+    let out = dissect(dir.path(), &["check-proof", "."]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+}

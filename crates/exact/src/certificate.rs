@@ -1,0 +1,98 @@
+//! Certificates of "no K-piece dissection": the formula the SAT solver
+//! refuted and the solver's proof that it is unsatisfiable, for an
+//! independent checker (`dissect-proof`, `dissect check-proof`).
+//!
+//! The formula is the placement encoding of "at most K pieces"
+//! ([`crate::placement_encoding`]) with every clause the search added to it
+//! before the solver answered UNSAT: the designer's constraints, the
+//! connectivity encoding, connectivity cuts. Each of these only removes
+//! assignments that are no connected K-piece dissection, so a refutation
+//! of the whole formula proves that none exists.
+
+use std::sync::atomic::AtomicBool;
+
+use crate::sat_backend::Sat;
+
+/// A refuted formula and its DRAT proof.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Certificate {
+    /// K: the formula says "a dissection into at most K pieces".
+    pub pieces: usize,
+    /// The formula, DIMACS CNF.
+    pub formula: String,
+    /// The proof that it is unsatisfiable, text DRAT (lemmas and `d`
+    /// deletions, ended by the empty clause).
+    pub proof: String,
+    /// Variables of the formula.
+    pub vars: usize,
+    /// Clauses of the formula.
+    pub clauses: usize,
+    /// Connectivity cuts among the clauses.
+    pub cuts: usize,
+    /// Whether the connectivity encoding is among the clauses.
+    pub connectivity: bool,
+    /// The formula holds only the clauses over the cells of a clique of
+    /// pairwise incompatible cells (each in some piece, the first K fixed to
+    /// pieces `0..K`, no two in one piece), a part of the placement
+    /// encoding: written when the whole encoding would not fit.
+    pub clique_only: bool,
+}
+
+/// The certificate of an UNSAT answer of `sat` (recording) for `k` pieces
+/// with `cuts` connectivity cuts; `None` when it was not recording.
+pub(crate) fn of_sat(
+    sat: &Sat<'_>,
+    k: usize,
+    cuts: usize,
+    connectivity: bool,
+) -> Option<Box<Certificate>> {
+    let (formula, clauses) = sat.dimacs()?;
+    Some(Box::new(Certificate {
+        pieces: k,
+        formula,
+        proof: sat.proof()?,
+        vars: sat.vars(),
+        clauses,
+        cuts,
+        connectivity,
+        clique_only: false,
+    }))
+}
+
+/// The placement encoding's clauses over `clique` pairwise incompatible
+/// cells for `k` pieces (`k < clique`), refuted: the clique bound's
+/// certificate when the whole encoding would not fit. `None` when stopped.
+pub(crate) fn clique(k: usize, clique: usize, stop: &AtomicBool) -> Option<Box<Certificate>> {
+    let mut sat = Sat::new(stop, None);
+    sat.record();
+    sat.record_proof();
+    let x: Vec<Vec<i32>> = (0..clique)
+        .map(|_| (0..k).map(|_| sat.var()).collect())
+        .collect();
+    for cell in &x {
+        sat.add(cell);
+    }
+    for (i, cell) in x.iter().enumerate().take(k) {
+        sat.add(&[cell[i]]);
+    }
+    for piece in 0..k {
+        for (a, first) in x.iter().enumerate() {
+            for second in &x[a + 1..] {
+                sat.add(&[-first[piece], -second[piece]]);
+            }
+        }
+    }
+    if sat.solve(None) != Some(false) {
+        return None;
+    }
+    let mut c = of_sat(&sat, k, 0, false)?;
+    c.clique_only = true;
+    Some(c)
+}
+
+impl Certificate {
+    /// The lemmas of the proof (lines that are not deletions).
+    pub fn lemmas(&self) -> usize {
+        self.proof.lines().filter(|l| !l.starts_with('d')).count()
+    }
+}

@@ -1,0 +1,154 @@
+//! Certificates (`ExactOptions::certify`): every refutation of the search
+//! comes with its formula and a DRAT proof that the independent checker
+//! `dissect-proof` verifies, and no certificate ever claims a piece count
+//! that brute force can reach.
+
+use std::sync::atomic::{AtomicBool, AtomicUsize};
+use std::sync::Mutex;
+
+use dissect_core::io::parse_figure;
+use dissect_core::{Figure, LatticeKind};
+use dissect_exact::{search, Certificate, ExactEvent, ExactObserver, ExactOptions, Mode, Reason};
+
+struct Collect(Mutex<Vec<Certificate>>, Mutex<Vec<usize>>);
+
+impl ExactObserver for Collect {
+    fn on_event(&self, event: &ExactEvent) {
+        match event {
+            ExactEvent::Certified(c) => self.0.lock().unwrap().push(c.clone()),
+            ExactEvent::Refuted(b) => {
+                if let Reason::Sat { refuted, .. } = b.reason {
+                    self.1.lock().unwrap().push(refuted);
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+fn figures(lattice: LatticeKind, texts: &[&str]) -> Vec<Figure> {
+    texts
+        .iter()
+        .map(|t| parse_figure(t, lattice).expect("test figure parses"))
+        .collect()
+}
+
+/// Certificates of a bound search up to `minimum - 1` pieces, each checked.
+fn certified(figs: &[Figure], mirror: bool, minimum: usize, eager: bool) -> Vec<Certificate> {
+    certified_with(
+        figs,
+        mirror,
+        minimum,
+        eager,
+        ExactOptions::default().max_encoding_bytes,
+    )
+}
+
+fn certified_with(
+    figs: &[Figure],
+    mirror: bool,
+    minimum: usize,
+    eager: bool,
+    max_encoding_bytes: u64,
+) -> Vec<Certificate> {
+    let options = ExactOptions {
+        mirror,
+        mode: Mode::LowerBound,
+        max_pieces: Some(minimum - 1),
+        eager_connectivity: eager,
+        certify: true,
+        max_encoding_bytes,
+        ..ExactOptions::default()
+    };
+    let collect = Collect(Mutex::new(Vec::new()), Mutex::new(Vec::new()));
+    let out = search(
+        figs,
+        &options,
+        &AtomicBool::new(false),
+        &AtomicUsize::new(usize::MAX),
+        &collect,
+    )
+    .expect("search runs");
+    assert_eq!(out.lower_bound.value, minimum, "{figs:?} eager {eager}");
+    let certs = collect.0.into_inner().unwrap();
+    for refuted in collect.1.into_inner().unwrap() {
+        assert!(
+            certs.iter().any(|c| c.pieces == refuted),
+            "the refutation of {refuted} pieces has a certificate"
+        );
+    }
+    for c in &certs {
+        assert!(
+            c.pieces < minimum,
+            "a certificate claims {} < the minimum {minimum}",
+            c.pieces
+        );
+        let cnf = dissect_proof::Cnf::parse(&c.formula).expect("the formula parses");
+        assert_eq!((cnf.vars(), cnf.clauses().len()), (c.vars, c.clauses));
+        let proof = dissect_proof::Proof::parse(&c.proof).expect("the proof parses");
+        dissect_proof::check(&cnf, &proof)
+            .unwrap_or_else(|e| panic!("k{}: the checker rejects the proof: {e}", c.pieces));
+    }
+    certs
+}
+
+#[test]
+fn every_refutation_has_a_certificate_the_checker_verifies() {
+    let s = LatticeKind::Square;
+    // Minimum piece counts from the brute force of tests/exact.rs.
+    let cases: [(&[&str], usize); 5] = [
+        (&["###\n#..", "##\n##"], 2),
+        (&["#.#\n###", "#####"], 3),
+        (&["###\n###", "######"], 2),
+        (&["##..\n.##.\n..##", "###\n###"], 2),
+        (&["###\n#.#\n###", "####\n####"], 2),
+    ];
+    for (texts, minimum) in cases {
+        for eager in [true, false] {
+            let certs = certified(&figures(s, texts), true, minimum, eager);
+            assert!(
+                certs.iter().any(|c| c.pieces == minimum - 1),
+                "{texts:?}: the bound {minimum} is certified"
+            );
+        }
+    }
+    let tri = figures(LatticeKind::Tri4, &["FF", "6C\n39"]);
+    certified(&tri, true, 3, false);
+}
+
+#[test]
+fn a_refutation_with_lemmas_is_certified() {
+    // A 15×10 rectangle with a 3×2 hole into a 12×12 square: SAT refutes 2
+    // pieces after conflicts, so the proof has lemmas to check.
+    let figs = figures(
+        LatticeKind::Square,
+        &[
+            "###############\n###############\n###############\n####...########\n####...########\n\
+             ###############\n###############\n###############\n###############\n###############",
+            &"############\n".repeat(12),
+        ],
+    );
+    let certs = certified(&figs, true, 3, true);
+    let k2 = certs.iter().find(|c| c.pieces == 2).expect("k2 certified");
+    assert!(k2.lemmas() > 1, "{} lemmas", k2.lemmas());
+}
+
+#[test]
+fn a_clique_bound_too_large_to_encode_is_certified_by_its_clique() {
+    // Squares 3 and 4 into 5: the 4 corners of the 5×5 square are pairwise
+    // incompatible. With no room for the encoding, the certificate of 3
+    // pieces holds the clique's clauses only.
+    let figs = figures(
+        LatticeKind::Square,
+        &[
+            "####..###\n####..###\n####..###\n####.....\n",
+            &"#####\n".repeat(5),
+        ],
+    );
+    let certs = certified_with(&figs, true, 4, true, 1);
+    assert_eq!(certs.len(), 1);
+    assert!(certs[0].clique_only && certs[0].pieces == 3);
+    assert_eq!(certs[0].vars, 4 * 3);
+    let full = certified(&figs, true, 4, true);
+    assert!(full.iter().all(|c| !c.clique_only && c.vars > 12));
+}

@@ -1,0 +1,82 @@
+//! An independent checker of `dissect`'s SAT certificates: a DIMACS CNF
+//! formula and a DRAT proof that it is unsatisfiable.
+//!
+//! The checker shares no code with the encoder or the solver: it parses the
+//! two texts itself ([`Cnf::parse`], [`Proof::parse`]) and replays the proof
+//! forwards ([`check`]): every added lemma must be a RUP (reverse unit
+//! propagation) or a RAT (resolution asymmetric tautology, on its first
+//! literal) lemma of the clauses present at that step; deletions remove
+//! clauses. The proof is accepted once unit propagation on the clauses
+//! present yields a conflict (the empty clause is then RUP), which proves
+//! the formula unsatisfiable.
+//!
+//! Architecture invariant: no I/O, no printing; the texts come in as
+//! strings, errors name the line.
+
+mod check;
+mod parse;
+
+pub use check::{check, Verified};
+pub use parse::{Cnf, Proof, Step};
+
+/// Which of the two texts an error is in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Source {
+    /// The DIMACS CNF formula.
+    Formula,
+    /// The DRAT proof.
+    Proof,
+}
+
+impl std::fmt::Display for Source {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Source::Formula => "formula",
+            Source::Proof => "proof",
+        })
+    }
+}
+
+/// Why a certificate was rejected.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ProofError {
+    /// Occurs when a text is not well-formed DIMACS CNF or DRAT.
+    #[error("{text} line {line}: {message}")]
+    Parse {
+        /// The text.
+        text: Source,
+        /// The line (from 1).
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// Occurs when a lemma of the proof is neither RUP nor RAT.
+    #[error("proof line {line}: lemma {lemma} is neither RUP nor RAT (step {step})")]
+    NotImplied {
+        /// The line (from 1) of the lemma in the proof.
+        line: usize,
+        /// The step (lemmas and deletions, from 1).
+        step: usize,
+        /// The lemma, in DIMACS.
+        lemma: String,
+    },
+    /// Occurs when the proof ends without a conflict: it proves nothing.
+    #[error("proof ends at line {line} without deriving the empty clause")]
+    Incomplete {
+        /// The last line of the proof.
+        line: usize,
+    },
+}
+
+impl ProofError {
+    /// The text the error is in and its line.
+    pub fn location(&self) -> (Source, usize) {
+        match self {
+            ProofError::Parse { text, line, .. } => (*text, *line),
+            ProofError::NotImplied { line, .. } | ProofError::Incomplete { line } => {
+                (Source::Proof, *line)
+            }
+        }
+    }
+}
