@@ -215,6 +215,14 @@ impl RunOptions {
         Ok(RunOptions { config })
     }
 
+    /// The same options for the figures in another order (the keep
+    /// regions follow their figure: figure `f` is `new_of_old[f]` now).
+    pub(crate) fn renumbered(&self, new_of_old: &[usize]) -> RunOptions {
+        let mut config = self.config.clone();
+        config.constraints = config.constraints.renumbered(new_of_old);
+        RunOptions { config }
+    }
+
     /// The settings as given.
     pub fn config(&self) -> &RunConfig {
         &self.config

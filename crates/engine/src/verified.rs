@@ -40,6 +40,21 @@ impl Verified {
         }
     }
 
+    /// The same dissection with its figures in another order: figure `f`
+    /// of the result is figure `from[f]` of this one (a permutation). The
+    /// pieces are the same in every figure, so it stays verified.
+    pub(crate) fn reordered(&self, from: &[usize]) -> Verified {
+        let (lattice, mirror, names, pieces) = self.dissection.clone().into_parts();
+        let dissection = Dissection::new(
+            lattice,
+            mirror,
+            from.iter().map(|&f| names[f].clone()).collect(),
+            from.iter().map(|&f| pieces[f].clone()).collect(),
+        )
+        .expect("a permutation of a valid dissection's figures is valid");
+        Verified { dissection }
+    }
+
     /// The dissection.
     pub fn dissection(&self) -> &Dissection {
         &self.dissection

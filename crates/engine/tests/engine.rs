@@ -215,6 +215,42 @@ fn without_a_time_limit_the_answer_is_the_same_for_1_and_2_threads() {
 }
 
 #[test]
+fn the_order_of_the_figures_does_not_change_the_answer() {
+    let figures = [
+        square(&["####", "####", "####", "####"]),
+        square(&["########", "########"]),
+        square(&["#.....", "######", "######", "##....", "#....."]),
+    ];
+    let names = ["square", "bar", "comb"];
+    let options = RunOptions::new(RunConfig { seed: 5, ..small() }).unwrap();
+    let mut answers = Vec::new();
+    for order in [
+        [0, 1, 2],
+        [0, 2, 1],
+        [1, 0, 2],
+        [1, 2, 0],
+        [2, 0, 1],
+        [2, 1, 0],
+    ] {
+        let figs: Vec<Figure> = order.iter().map(|&i| figures[i].clone()).collect();
+        let named: Vec<String> = order.iter().map(|&i| names[i].to_string()).collect();
+        let r = run(&figs, &named, &options, &AtomicBool::new(false), &()).unwrap();
+        let best = r.best.expect("a dissection");
+        assert!(verify_pieces(LatticeKind::Square, true, &figs, best.pieces()).is_ok());
+        assert_eq!(best.dissection().names(), named.as_slice(), "input order");
+        // Figure i of the instance, wherever it was given.
+        let mut by_figure = vec![Vec::new(); 3];
+        for (place, &i) in order.iter().enumerate() {
+            by_figure[i] = best.pieces()[place].clone();
+        }
+        answers.push((best.piece_count(), by_figure));
+    }
+    for a in &answers[1..] {
+        assert_eq!(a, &answers[0], "the same dissection in every order");
+    }
+}
+
+#[test]
 fn a_raised_stop_still_returns_a_verified_answer_or_none() {
     let figures = [
         square(&["#########", "#########", "#########", "#########"]),

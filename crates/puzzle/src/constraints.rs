@@ -430,6 +430,16 @@ impl Constraints {
             && self.min_level.is_none()
     }
 
+    /// The same constraints for the figures in another order: the figure
+    /// numbered `f` here is numbered `new_of_old[f]` in the result.
+    pub fn renumbered(&self, new_of_old: &[usize]) -> Constraints {
+        let mut c = self.clone();
+        for k in &mut c.keep {
+            k.figure = new_of_old.get(k.figure).copied().unwrap_or(k.figure);
+        }
+        c
+    }
+
     /// Adds keep regions.
     pub fn with_keep(mut self, keep: KeepRegions) -> Constraints {
         self.keep.push(keep);

@@ -191,7 +191,8 @@ fn info_on_the_largest_figure_allowed_is_quick() {
         run.stdout,
         "big.txt: 4190208 cells (tri4), 1 component, 0 holes, bounding box 1023x1024 at (0, 0)\n"
     );
-    assert!(run.elapsed < Duration::from_secs(15), "{:?}", run.elapsed);
+    // About 2 s on an idle 2-core machine; 21 s was seen with five builds beside it.
+    assert!(run.elapsed < Duration::from_secs(30), "{:?}", run.elapsed);
 }
 
 #[test]

@@ -5,6 +5,7 @@
 //! verification, ranking, report).
 
 mod answer;
+mod order;
 mod polish;
 mod shared;
 mod sides;
@@ -117,6 +118,10 @@ pub enum EngineError {
 
 /// Runs `options` on `figures` (named `names` in the answer, input order).
 ///
+/// The search sees the figures in an order their shapes decide (the most
+/// self-symmetries first, `order.rs`), so the piece count a run reaches does
+/// not depend on the order they are given in; the answer is in input order.
+///
 /// The run ends when the best dissection meets the lower bound, at the
 /// time limit, when `stop` is raised, or when both sides ended by their
 /// work rules: the heuristic after [`RunConfig::idle_rounds`](crate::RunConfig)
@@ -165,6 +170,49 @@ pub fn run_with(
     executor: Option<&dyn Executor>,
 ) -> Result<Report, EngineError> {
     check(figures, options)?;
+    let lattice = figures[0].lattice().lattice();
+    let mirror = options.config().mirror && lattice.supports_mirror();
+    let order = order::canonical_order(figures, mirror);
+    let names: Vec<String> = (0..figures.len()).map(|i| figure_name(names, i)).collect();
+    if order.iter().enumerate().all(|(i, &f)| i == f) {
+        return run_in_order(figures, &names, options, stop, observer, executor);
+    }
+    let mut new_of_old = vec![0; order.len()];
+    for (i, &f) in order.iter().enumerate() {
+        new_of_old[f] = i;
+    }
+    let report = run_in_order(
+        &order
+            .iter()
+            .map(|&f| figures[f].clone())
+            .collect::<Vec<_>>(),
+        &order.iter().map(|&f| names[f].clone()).collect::<Vec<_>>(),
+        &options.renumbered(&new_of_old),
+        stop,
+        observer,
+        executor,
+    )?;
+    Ok(order::restore(report, &order))
+}
+
+/// The name of figure `i`: the one given, else "figure i".
+fn figure_name(names: &[String], i: usize) -> String {
+    names
+        .get(i)
+        .cloned()
+        .unwrap_or_else(|| format!("figure {i}"))
+}
+
+/// [`run_with`] on the figures in the order the search sees them
+/// (`order::canonical_order`), named.
+fn run_in_order(
+    figures: &[Figure],
+    names: &[String],
+    options: &RunOptions,
+    stop: &AtomicBool,
+    observer: &dyn EngineObserver,
+    executor: Option<&dyn Executor>,
+) -> Result<Report, EngineError> {
     let plan = Plan::new(figures, names, options);
     let judge = options
         .collects()
@@ -210,14 +258,7 @@ impl<'r> Plan<'r> {
         let config = options.config();
         let lattice = figures[0].lattice();
         let mirror = config.mirror && lattice.lattice().supports_mirror();
-        let names = (0..figures.len())
-            .map(|i| {
-                names
-                    .get(i)
-                    .cloned()
-                    .unwrap_or_else(|| format!("figure {i}"))
-            })
-            .collect();
+        let names = (0..figures.len()).map(|i| figure_name(names, i)).collect();
         let start = Instant::now();
         let deadline = options.time_limit().and_then(|d| start.checked_add(d));
         let strategy = options.strategy();
