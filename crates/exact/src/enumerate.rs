@@ -33,7 +33,7 @@
 //! the SAT solver is asked once per class, not once per dissection.
 //!
 //! With [`EnumerateOptions::symmetry_breaking`] (the default) the model
-//! also holds lex-leader constraints ([`crate::enumerate_symmetry`]): only
+//! also holds lex-leader constraints (`enumerate_symmetry.rs`): only
 //! the lex-least cut of each class is a model, and each component of the
 //! other figures is filled in one way up to its own symmetries, so the
 //! search that proves the list complete covers a fraction of the space.
@@ -67,7 +67,7 @@ pub struct EnumerateOptions {
     /// Refuse an encoding estimated above this many bytes
     /// ([`Limit::TooLarge`]).
     pub max_encoding_bytes: u64,
-    /// Break the symmetries (see [`crate::enumerate_symmetry`]): the SAT
+    /// Break the symmetries (see `enumerate_symmetry.rs`): the SAT
     /// solver finds each class once, as the lex-least cut, and assemblies
     /// are taken up to the symmetries of each component of the other
     /// figures. Off, every cut is found by the solver (the counts agree;
