@@ -53,7 +53,7 @@ mod verified;
 pub use assemblies::{assemblies, AssemblyEvent, CountError};
 pub use bound::{bound, BoundConfig, BoundReport};
 pub use disassemble::disassemble;
-pub use dissect_exact::{EnumerateEvent, EnumerateObserver};
+pub use dissect_exact::{EnumerateEvent, EnumerateObserver, ExactEvent};
 pub use dissect_puzzle::assemblies::{AssemblyError, Count};
 pub use dissect_puzzle::disassembly::{Disassembly, DisassemblyError, Plan as DisassemblyPlan};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};

@@ -31,6 +31,12 @@
 //! each model yields its whole class at once: every distinct image is
 //! verified, counted and blocked (by the clause of its own labelling), and
 //! the SAT solver is asked once per class, not once per dissection.
+//!
+//! With [`EnumerateOptions::symmetry_breaking`] (the default) the model
+//! also holds lex-leader constraints (`enumerate_symmetry.rs`): only
+//! the lex-least cut of each class is a model, and each component of the
+//! other figures is filled in one way up to its own symmetries, so the
+//! search that proves the list complete covers a fraction of the space.
 
 use std::collections::{HashMap, HashSet};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -61,6 +67,12 @@ pub struct EnumerateOptions {
     /// Refuse an encoding estimated above this many bytes
     /// ([`Limit::TooLarge`]).
     pub max_encoding_bytes: u64,
+    /// Break the symmetries (see `enumerate_symmetry.rs`): the SAT
+    /// solver finds each class once, as the lex-least cut, and assemblies
+    /// are taken up to the symmetries of each component of the other
+    /// figures. Off, every cut is found by the solver (the counts agree;
+    /// the tests compare both with a brute force).
+    pub symmetry_breaking: bool,
 }
 
 impl Default for EnumerateOptions {
@@ -70,6 +82,7 @@ impl Default for EnumerateOptions {
             pieces: None,
             deadline: None,
             max_encoding_bytes: DEFAULT_MAX_ENCODING_BYTES,
+            symmetry_breaking: true,
         }
     }
 }
@@ -280,14 +293,6 @@ impl Run<'_> {
         if eager && !add_connectivity(&mut sat, shape0, &enc.cell[0], &enc.anchors, &interrupted) {
             return Ok(());
         }
-        self.observer.on_event(&EnumerateEvent::Encoded {
-            pieces: k,
-            size: EncodingSize {
-                vars: sat.vars(),
-                clauses: sat.clauses(),
-                motions: enc.motions(),
-            },
-        });
         let motions = dissect_puzzle::Motions::new(inst.lattice, inst.mirror);
         let cut_of = Cuts {
             symmetries: motions.symmetries_of(self.figures[0].cells()),
@@ -299,6 +304,23 @@ impl Run<'_> {
                 .map(|(i, c)| (*c, i))
                 .collect(),
         };
+        if self.options.symmetry_breaking {
+            crate::enumerate_symmetry::break_symmetries(
+                &mut sat,
+                &inst,
+                &enc,
+                &cut_of.motions,
+                &cut_of.symmetries,
+            );
+        }
+        self.observer.on_event(&EnumerateEvent::Encoded {
+            pieces: k,
+            size: EncodingSize {
+                vars: sat.vars(),
+                clauses: sat.clauses(),
+                motions: enc.motions(),
+            },
+        });
         loop {
             let answer = sat.solve(self.options.deadline);
             self.out.conflicts = sat.conflicts();

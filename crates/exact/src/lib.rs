@@ -35,6 +35,7 @@ pub(crate) mod component_count;
 pub(crate) mod connectivity_cut;
 pub(crate) mod constraint_encoding;
 pub mod enumerate;
+pub(crate) mod enumerate_symmetry;
 pub(crate) mod extent_clique;
 pub(crate) mod incompatible_clique;
 pub(crate) mod instance;

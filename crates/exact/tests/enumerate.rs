@@ -232,12 +232,17 @@ impl Brute {
 }
 
 fn run(figs: &[Figure], mirror: bool, pieces: Option<usize>) -> Enumeration {
+    run_with(figs, mirror, pieces, true)
+}
+
+fn run_with(figs: &[Figure], mirror: bool, pieces: Option<usize>, breaking: bool) -> Enumeration {
     let stop = AtomicBool::new(false);
     enumerate(
         figs,
         &EnumerateOptions {
             mirror,
             pieces,
+            symmetry_breaking: breaking,
             ..EnumerateOptions::default()
         },
         &stop,
@@ -247,13 +252,25 @@ fn run(figs: &[Figure], mirror: bool, pieces: Option<usize>) -> Enumeration {
 }
 
 /// The count and the classes for `k` pieces agree with the brute force,
-/// every dissection is valid and no cut of the first figure comes twice;
-/// returns the count.
+/// every dissection is valid and no cut of the first figure comes twice,
+/// with the symmetry breaking and without it; returns the count.
 fn check(lattice: LatticeKind, mirror: bool, texts: &[&str], k: usize) -> usize {
+    let n = check_with(lattice, mirror, texts, k, true);
+    assert_eq!(check_with(lattice, mirror, texts, k, false), n);
+    n
+}
+
+fn check_with(
+    lattice: LatticeKind,
+    mirror: bool,
+    texts: &[&str],
+    k: usize,
+    breaking: bool,
+) -> usize {
     let figs = figures(lattice, texts);
     let brute = Brute::new(lattice, mirror);
     let expected = brute.dissections(&figs, k);
-    let got = run(&figs, mirror, Some(k));
+    let got = run_with(&figs, mirror, Some(k), breaking);
     assert!(got.complete, "{texts:?} k={k}");
     assert_eq!(got.pieces, k);
     assert_eq!(
@@ -361,6 +378,26 @@ fn cubic_counts_match_brute_force() {
     check(c, false, &["##\n##\n\n##\n##", "####\n####"], 3);
     check(c, false, &["###\n#..\n\n##.\n...", "###\n###"], 2);
     check(c, false, &["###\n#..\n\n##.\n...", "###\n###"], 3);
+}
+
+/// Targets of several symmetric components (as Loyd's three squares):
+/// the symmetry breaking inside each component loses no cut.
+#[test]
+fn targets_of_several_symmetric_components_match_brute_force() {
+    let s = LatticeKind::Square;
+    let two = ["####\n####", "##.##\n##.##"];
+    check(s, true, &two, 2);
+    check(s, false, &two, 3);
+    let halves = ["####\n####\n####", "###.###\n###.###"];
+    assert!(check(s, true, &halves, 2) > 0);
+    check(s, false, &halves, 3);
+    let three = ["####\n####\n####", "##.##.##\n##.##.##"];
+    // Three pieces cannot make them (4x3 holds no three 2x2 squares).
+    assert_eq!(check(s, false, &three, 3), 0);
+    assert!(check(s, false, &three, 4) > 0);
+    check(s, true, &three, 4);
+    let tri = LatticeKind::Tri4;
+    check(tri, true, &["FF\nFF", "F.F\nF.F"], 2);
 }
 
 #[test]

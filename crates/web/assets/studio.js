@@ -307,6 +307,7 @@ function updateAreas() {
     el.textContent = `✗ Areas differ by ${diff} cell${diff === 1 ? '' : 's'} (${list}): ${diffs}`;
   }
   $('#solve').disabled = !(equal && counts[0] > 0 && state.figures.length >= 2) || !!state.job;
+  $('#enumerate').disabled = $('#solve').disabled;
   updateKeepSummary();
 }
 
@@ -749,11 +750,31 @@ async function startSolve() {
   if (weight) body.symmetry_weight = weight;
   const keep = keepJson();
   if (keep.length) body.keep = keep;
+  await runJob(body);
+}
+
+/** "All solutions": every dissection with the fewest pieces, counted (the time limit and Stop apply). */
+async function startEnumerate() {
+  showMessage('');
+  $('#enumerate-count').textContent = '';
+  await runJob({
+    lattice: state.lattice,
+    figures: state.figures.map((f) => ({ name: f.name, cells: cellsJson(f) })),
+    mirror: $('#opt-mirror').checked,
+    time_limit: Number($('#opt-time').value),
+    rank: $('#opt-rank').value,
+    enumerate: true,
+  });
+}
+
+/** Starts a job (a solve or an enumeration) and follows it to its end. */
+async function runJob(body) {
   try {
     const started = await api('POST', '/api/solve', body);
     state.job = { id: started.id, figures: body.figures, lattice: body.lattice };
     $('#stop').disabled = false;
     $('#solve').disabled = true;
+    $('#enumerate').disabled = true;
     $('#progress').hidden = false;
     $('#result').hidden = true;
     const es = new EventSource(started.events);
@@ -790,6 +811,19 @@ function showProgress(s) {
   $('#p-bound').classList.toggle('optimal', !!s.optimal);
   $('#p-elapsed').textContent = `${fmt(s.elapsed, 1)} s`;
   $('#meter-fill').style.width = s.total ? `${Math.min(100, (100 * s.done) / s.total)}%` : '0';
+  const e = s.enumeration;
+  if (e) {
+    $('#p-done').textContent = `${e.dissections} dissections (${e.classes} up to symmetry)`;
+    if (s.state === 'running') {
+      $('#enumerate-count').textContent = `${e.dissections} dissections with ${e.pieces} pieces (${e.classes} up to symmetry) so far${e.minimum ? '' : ', minimum not yet proved'}…`;
+    }
+  }
+}
+
+/** An enumeration's count in words, as `dissect enumerate` ends: complete, or at least N when stopped. */
+function enumerationText(e) {
+  const counted = `${e.dissections} dissection${e.dissections === 1 ? '' : 's'} with ${e.pieces} pieces (${e.classes} up to the first figure's symmetries)`;
+  return e.complete ? `${counted}, complete` : `at least ${counted}, stopped`;
 }
 
 function endJob() {
@@ -805,6 +839,11 @@ function finish(s) {
   endJob();
   if (s.state === 'failed') { showMessage(s.error || 'the solve failed'); return; }
   const r = s.result;
+  if (r && r.enumeration) $('#enumerate-count').textContent = enumerationText(r.enumeration);
+  if (r && r.enumeration && !r.found) {
+    showMessage(`No dissection with ${r.enumeration.pieces} pieces found${r.stopped ? ' before the stop (the minimum is at least that)' : ''}.`);
+    return;
+  }
   if (!r || !r.found) {
     const constrained = r && r.ranking && Object.keys(r.ranking.constraints || {}).length > 0;
     showMessage(`No dissection found${r && r.stopped ? ' before the stop' : ''}${constrained ? ' that honours the constraints' : ''}: the best candidate with ${r ? r.last_pieces : '?'} pieces had matching score E_M = ${r ? r.best_mismatch : '?'}.`);
@@ -850,11 +889,15 @@ function renderBrowser() {
   const list = $('#sol-list');
   list.textContent = '';
   const n = run.solutions.length;
-  $('#browser').hidden = n < 2 && !run.ranking;
+  $('#browser').hidden = n < 2 && !run.ranking && !run.enumeration;
   const by = run.ranking ? RANKS[run.ranking.by] || run.ranking.by : null;
   $('#sol-ranking').textContent = run.ranking
     ? `ranked by ${by}; ${run.ranking.found} found of ${run.ranking.asked} asked for`
     : '';
+  if (run.enumeration) {
+    const e = run.enumeration;
+    $('#sol-ranking').textContent = `${enumerationText(e)}; one per class${e.listed < e.classes ? `, the first ${e.listed} listed` : ''}`;
+  }
   run.solutions.forEach((s, i) => {
     const li = document.createElement('li');
     li.dataset.testid = `sol-${i}`;
@@ -869,6 +912,12 @@ function renderBrowser() {
     asm.textContent = (s.assemblies || []).map((c) => (c.complete ? c.up_to_symmetry : `≥${c.up_to_symmetry}`)).join(' + ');
     asm.title = 'assemblies up to symmetry, per figure';
     li.append(head, body, sc, asm);
+    if (s.class_size) {
+      const size = document.createElement('span');
+      size.textContent = `× ${s.class_size}`;
+      size.title = 'dissections in this class (images of this cut under the first figure\'s symmetries)';
+      li.append(size);
+    }
     if (s.unique) li.append(uniqueMark());
     li.onclick = () => selectSolution(i);
     list.append(li);
@@ -889,7 +938,9 @@ function selectSolution(i) {
     optimal: s.solution?.optimal ?? run.optimal,
     current: s,
   };
-  $('#sol-position').textContent = `Solution ${k + 1} of ${n}`;
+  $('#sol-position').textContent = run.enumeration
+    ? `Class ${k + 1} of ${n} (${s.class_size} dissection${s.class_size === 1 ? '' : 's'})`
+    : `Solution ${k + 1} of ${n}`;
   $('#sol-prev').disabled = k === 0;
   $('#sol-next').disabled = k === n - 1;
   $$('#sol-list li').forEach((li, j) => li.classList.toggle('current', j === k));
@@ -988,7 +1039,7 @@ function showResult() {
   $('#result').hidden = false;
   $('#result-summary').textContent =
     `${r.pieces} pieces${r.optimal ? ' (optimal)' : ` (lower bound ${r.lower_bound})`} · area variance ${Number(r.area_variance).toFixed(2)} · piece areas ${r.areas.join(', ')} · ` +
-    `${r.seconds.toFixed(2)} s${r.stopped ? ' (stopped: best found so far)' : ''}` +
+    `${r.seconds.toFixed(2)} s${r.stopped ? (r.enumeration ? ' (stopped: the list is not complete)' : ' (stopped: best found so far)') : ''}` +
     (r.current?.scores ? ` · ${scoresText(r.current.scores)}` : '') +
     (r.current?.rank ? ` · rank ${r.current.rank.position} by ${RANKS[r.current.rank.by] || r.current.rank.by}` : '');
   showAssemblies(r.current);
@@ -1197,6 +1248,7 @@ async function init() {
   });
   window.addEventListener('studio-hover-piece', (ev) => highlight(ev.detail));
   $('#solve').onclick = startSolve;
+  $('#enumerate').onclick = startEnumerate;
   // The keep tool's letters, each in its palette colour.
   const letters = $('#keep-letter');
   for (const l of LETTERS) {

@@ -451,3 +451,45 @@ test('keep-whole regions painted on a figure, piece sizes and the checkerboard s
   assert.ok(await page.isDisabled('[data-testid=opt-checkerboard]'));
   assert.deepEqual(pageErrors, []);
 });
+
+test('all solutions: every minimum dissection counted, complete, and stepped through class by class', async () => {
+  await open();
+  // Figure a: a 3x2 rectangle; figure b: an L of 4 + 2 cells (10
+  // dissections in 3 classes, as `dissect enumerate` counts them).
+  await tool('rect');
+  await drag(0, [0, 0], [2, 1]);
+  assert.equal(await count(0).textContent(), '6 cells');
+  await setSize(1, 4, 2);
+  await drag(1, [0, 0], [3, 0]);
+  await drag(1, [0, 1], [1, 1]);
+  assert.equal(await count(1).textContent(), '6 cells');
+  await page.click('[data-testid=puzzle] summary');
+  await page.fill('#opt-time', '30');
+  await page.click('[data-testid=enumerate]');
+  await page.waitForSelector('#progress:not([hidden])');
+  await page.waitForSelector('#result:not([hidden])', { timeout: 45_000 });
+  const line = await page.textContent('[data-testid=enumerate-count]');
+  const m = /^(\d+) dissections? with (\d+) pieces \((\d+) up to the first figure's symmetries\), complete$/.exec(line);
+  assert.ok(m, line);
+  const [total, pieces, classes] = [Number(m[1]), Number(m[2]), Number(m[3])];
+  assert.deepEqual([total, pieces, classes], [10, 2, 3], line);
+  assert.ok(await page.isVisible('[data-testid=solutions]'), 'the browser lists the classes');
+  assert.equal(await page.locator('#sol-list li').count(), classes);
+  assert.match(await page.textContent('#sol-ranking'), /, complete; one per class/);
+  const sizes = await page.evaluate(() => window.studio.run.solutions.map((s) => s.class_size));
+  assert.equal(sizes.reduce((a, b) => a + b, 0), total, 'the class sizes add up to the count');
+  const seen = new Set();
+  for (let i = 0; i < classes; i++) {
+    if (i > 0) await page.click('[data-testid=sol-next]');
+    assert.match(await page.textContent('[data-testid=sol-position]'), new RegExp(`^Class ${i + 1} of ${classes} \\(${sizes[i]} dissections?\\)$`));
+    const solution = await verifyShown('square');
+    assert.equal(solution.figures[0].pieces.length, pieces);
+    assert.equal(solution.enumeration.class, i + 1);
+    seen.add(JSON.stringify(solution.figures[0].pieces));
+  }
+  assert.equal(seen.size, classes, 'one different cut per class');
+  assert.ok(await page.isDisabled('[data-testid=sol-next]'));
+  await page.locator('#result').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(DOCS, 'studio-all-solutions.png'), fullPage: true });
+  assert.deepEqual(pageErrors, []);
+});

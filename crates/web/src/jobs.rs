@@ -5,6 +5,10 @@
 //! Once the run returns, the assemblies of each solution are counted in
 //! every figure ([`crate::puzzle::count_assemblies`]: `counting` in the
 //! snapshot) before the result is published.
+//!
+//! A job may instead enumerate every minimum dissection ("all solutions",
+//! [`crate::enumerate`]): [`Request::enumerate`] set, its count so far in
+//! [`Snapshot::enumeration`], its result [`crate::enumerate::result_json`].
 
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
@@ -13,7 +17,11 @@ use std::time::Instant;
 
 use dissect_core::solver::Event;
 use dissect_core::{Figure, LatticeKind};
-use dissect_engine::{EngineEvent, EngineObserver, Report, RunOptions};
+use dissect_engine::ExactEvent;
+use dissect_engine::{
+    EngineEvent, EngineObserver, EnumerateConfig, EnumerateEvent, EnumerateObserver, Report,
+    RunOptions,
+};
 use serde::Serialize;
 use serde_json::{json, Value};
 use tokio::sync::{watch, OwnedSemaphorePermit, Semaphore};
@@ -75,6 +83,8 @@ pub struct Snapshot {
     pub result: Option<Value>,
     /// The error once failed.
     pub error: Option<String>,
+    /// An enumeration's count so far (`None` for a solve).
+    pub enumeration: Option<crate::enumerate::Progress>,
 }
 
 /// One solve.
@@ -180,6 +190,44 @@ impl EngineObserver for Job {
     }
 }
 
+impl EnumerateObserver for Job {
+    fn on_event(&self, event: &EnumerateEvent) {
+        self.tx.send_modify(|s| {
+            let e = s.enumeration.get_or_insert_with(Default::default);
+            match event {
+                EnumerateEvent::Search(ExactEvent::Refuted(b)) => {
+                    s.lower_bound = Some(b.value);
+                    e.pieces = b.value;
+                    s.pieces = b.value;
+                }
+                EnumerateEvent::Minimum { pieces, seconds } => {
+                    e.pieces = *pieces;
+                    e.minimum = true;
+                    s.pieces = *pieces;
+                    s.best_pieces = Some(*pieces);
+                    s.lower_bound = Some(*pieces);
+                    s.optimal = true;
+                    s.history.push(json!({
+                        "pieces": pieces,
+                        "seconds": (seconds * 1000.0).round() / 1000.0,
+                        "by": "enumerate",
+                    }));
+                }
+                EnumerateEvent::Encoded { pieces, .. } => {
+                    e.pieces = *pieces;
+                    s.pieces = *pieces;
+                }
+                EnumerateEvent::Found { count, classes, .. } => {
+                    e.dissections = *count;
+                    e.classes = *classes;
+                }
+                _ => {}
+            }
+            s.elapsed = self.started.elapsed().as_secs_f64();
+        });
+    }
+}
+
 /// What a solve needs.
 pub struct Request {
     /// The lattice.
@@ -190,6 +238,9 @@ pub struct Request {
     pub names: Vec<String>,
     /// The run's options (checked by the engine), time limit included.
     pub options: RunOptions,
+    /// Enumerate every dissection with the fewest pieces instead of
+    /// solving ("all solutions"); `options` is then not used.
+    pub enumerate: Option<EnumerateConfig>,
 }
 
 /// All jobs of a server.
@@ -255,6 +306,7 @@ impl Jobs {
             history: Vec::new(),
             result: None,
             error: None,
+            enumeration: request.enumerate.as_ref().map(|_| Default::default()),
         });
         let job = Arc::new(Job {
             id,
@@ -279,7 +331,11 @@ impl Jobs {
             }
             jobs.insert(id, Arc::clone(&job));
         }
-        spawn(Arc::clone(&job), request, permit);
+        if request.enumerate.is_some() {
+            spawn_enumeration(Arc::clone(&job), request, permit);
+        } else {
+            spawn(Arc::clone(&job), request, permit);
+        }
         Ok(job)
     }
 }
@@ -329,6 +385,48 @@ fn spawn(job: Arc<Job>, request: Request, permit: OwnedSemaphorePermit) {
             }
             s.state = state;
             s.counting = false;
+            s.result = result;
+            s.error = error;
+            s.elapsed = elapsed;
+        });
+    });
+}
+
+/// Runs an enumeration job ([`Request::enumerate`]): its result is
+/// [`crate::enumerate::result_json`].
+fn spawn_enumeration(job: Arc<Job>, request: Request, permit: OwnedSemaphorePermit) {
+    let worker = Arc::clone(&job);
+    let handle = tokio::task::spawn_blocking(move || {
+        let config = request.enumerate.clone().unwrap_or_default();
+        dissect_engine::enumerate(
+            &request.figures,
+            &request.names,
+            &config,
+            &worker.stop,
+            &*worker,
+        )
+    });
+    tokio::spawn(async move {
+        let (state, result, error) = match handle.await {
+            Ok(Ok(report)) => (
+                State::Done,
+                Some(crate::enumerate::result_json(&report)),
+                None,
+            ),
+            Ok(Err(e)) => (State::Failed, None, Some(e.to_string())),
+            Err(e) => (
+                State::Failed,
+                None,
+                Some(format!("the enumeration crashed: {e}")),
+            ),
+        };
+        drop(permit);
+        let elapsed = job.started.elapsed().as_secs_f64();
+        job.tx.send_modify(|s| {
+            if let Some(r) = &result {
+                s.optimal = r["optimal"] == Value::Bool(true);
+            }
+            s.state = state;
             s.result = result;
             s.error = error;
             s.elapsed = elapsed;

@@ -8,6 +8,7 @@
 //! Every request that is not understood gets a JSON error (see
 //! [`error::ApiError`]); nothing a client sends makes the server panic.
 
+pub mod enumerate;
 pub mod error;
 pub mod export;
 pub mod figures;

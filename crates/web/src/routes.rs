@@ -7,7 +7,7 @@
 //! | `GET /api/lattices` | how the page draws each lattice's cells (tiles, neighbours) |
 //! | `GET /api/examples` | the shipped examples with their figure texts |
 //! | `POST /api/figures` | read figures (cells or text): cells, text, counts |
-//! | `POST /api/solve` | start a solve: `202 {"id": ..}` |
+//! | `POST /api/solve` | start a solve: `202 {"id": ..}` (with `"enumerate": true`: every minimum dissection, counted) |
 //! | `GET /api/solve/{id}` | its progress and, once done, its result |
 //! | `GET /api/solve/{id}/events` | the same as server-sent events |
 //! | `POST /api/solve/{id}/stop` | stop it; the best dissection so far is kept |
@@ -226,6 +226,99 @@ struct SolveRequest {
     /// `--symmetry-weight`.
     #[serde(default)]
     symmetry_weight: Option<f64>,
+    /// "All solutions": every dissection with the fewest pieces, counted
+    /// (`dissect enumerate`), instead of a solve.
+    #[serde(default)]
+    enumerate: Option<bool>,
+}
+
+impl SolveRequest {
+    /// The settings an enumeration does not take, by their API names.
+    fn solve_only_settings(&self) -> Vec<&'static str> {
+        let set = [
+            ("seed", self.seed.is_some()),
+            ("explorations", self.explorations.is_some()),
+            ("max_pieces", self.max_pieces.is_some()),
+            ("solutions", self.solutions.is_some_and(|n| n != 1)),
+            ("keep", self.keep.as_ref().is_some_and(|k| !k.is_empty())),
+            ("min_piece", self.min_piece.is_some()),
+            ("max_piece", self.max_piece.is_some()),
+            ("checkerboard", self.checkerboard == Some(true)),
+            (
+                "symmetry_weight",
+                self.symmetry_weight.is_some_and(|w| w != 0.0),
+            ),
+        ];
+        set.iter().filter(|(_, on)| *on).map(|(n, _)| *n).collect()
+    }
+}
+
+/// The time limit of a request: more than 0 and at most the server's.
+fn time_limit_of(requested: Option<f64>, limits: &Limits) -> Result<TimeLimit, ApiError> {
+    let max_t = limits.max_time_limit();
+    let seconds = requested.unwrap_or(max_t);
+    // The engine's rule (NaN and negatives refused), then the server's cap.
+    TimeLimit::new(seconds)
+        .ok()
+        .filter(|l| seconds > 0.0 && l.seconds().is_some_and(|t| t <= max_t))
+        .ok_or_else(|| {
+            ApiError::BadValue(format!(
+                "time_limit must be more than 0 and at most {max_t} seconds, got {seconds}"
+            ))
+        })
+}
+
+/// `POST /api/solve` with `"enumerate": true`: every dissection with the
+/// fewest pieces ([`crate::enumerate`]), on figures of at most
+/// [`crate::enumerate::MAX_CELLS`] cells, without the solve's settings.
+fn start_enumerate(
+    s: &AppState,
+    req: SolveRequest,
+    lattice: dissect_core::LatticeKind,
+    figs: Vec<dissect_core::Figure>,
+) -> Result<Arc<Job>, ApiError> {
+    let refused = req.solve_only_settings();
+    if !refused.is_empty() {
+        return Err(ApiError::BadValue(format!(
+            "enumerate counts every dissection with the fewest pieces and takes no {}",
+            refused.join(", ")
+        )));
+    }
+    let cells = figs[0].len();
+    if cells > crate::enumerate::MAX_CELLS {
+        return Err(ApiError::BadValue(format!(
+            "enumerate is for small figures: at most {} cells on this server, the figures have {cells}",
+            crate::enumerate::MAX_CELLS
+        )));
+    }
+    let rank = req
+        .rank
+        .as_deref()
+        .map(str::parse::<Rank>)
+        .transpose()
+        .map_err(|e| ApiError::BadValue(format!("rank: {e}")))?;
+    let config = dissect_engine::EnumerateConfig {
+        mirror: req.mirror.unwrap_or(RunConfig::default().mirror),
+        pieces: None,
+        time_limit: time_limit_of(req.time_limit, &s.limits)?,
+        rank,
+        unique: false,
+    };
+    let names = req
+        .figures
+        .iter()
+        .enumerate()
+        .map(|(i, f)| figures::name_of(f, i))
+        .collect();
+    s.jobs.start(Request {
+        lattice,
+        figures: figs,
+        names,
+        // Not used by an enumeration (its settings are `config`).
+        options: RunOptions::new(RunConfig::default())
+            .map_err(|e| ApiError::Internal(e.to_string()))?,
+        enumerate: Some(config),
+    })
 }
 
 async fn start_solve(
@@ -243,18 +336,11 @@ async fn start_solve(
     let as_given = figures::read_all_as_given(&req.figures, lattice, &s.limits)?;
     let figs: Vec<_> = as_given.iter().map(figures::normalized).collect();
     figures::check_equal_areas(&req.figures, &figs)?;
-    let max_t = s.limits.max_time_limit();
-    let seconds = req.time_limit.unwrap_or(max_t);
-    // The engine's rule (NaN and negatives refused), then the server's cap:
-    // a limit, more than 0 and at most the server's.
-    let time_limit = TimeLimit::new(seconds)
-        .ok()
-        .filter(|l| seconds > 0.0 && l.seconds().is_some_and(|t| t <= max_t))
-        .ok_or_else(|| {
-            ApiError::BadValue(format!(
-                "time_limit must be more than 0 and at most {max_t} seconds, got {seconds}"
-            ))
-        })?;
+    if req.enumerate == Some(true) {
+        let job = start_enumerate(&s, req, lattice, figs)?;
+        return Ok(accepted(job.id()));
+    }
+    let time_limit = time_limit_of(req.time_limit, &s.limits)?;
     let explorations = req
         .explorations
         .unwrap_or(RunConfig::default().explorations);
@@ -325,9 +411,14 @@ async fn start_solve(
         figures: figs,
         names,
         options,
+        enumerate: None,
     })?;
-    let id = job.id();
-    Ok((
+    Ok(accepted(job.id()))
+}
+
+/// `202 {"id", "status", "events", "stop"}` for a started job.
+fn accepted(id: u64) -> Response {
+    (
         StatusCode::ACCEPTED,
         [(header::LOCATION, format!("/api/solve/{id}"))],
         Json(json!({
@@ -337,7 +428,7 @@ async fn start_solve(
             "stop": format!("/api/solve/{id}/stop"),
         })),
     )
-        .into_response())
+        .into_response()
 }
 
 fn job(s: &AppState, id: &str) -> Result<Arc<Job>, ApiError> {
