@@ -18,6 +18,13 @@ use crate::solver::{Event, Observer, Options, Outcome, Repair, SolveError, Via};
 /// Levels climbed at full resolution from a lifted coarse candidate.
 const CLIMB: usize = 2;
 
+/// Motions the pilot method tries at each step it looks ahead.
+const PILOT_WIDTH: usize = 4;
+
+/// Steps the pilot method looks ahead at (the first ones: they cut the
+/// largest pieces).
+const PILOT_DEPTH: usize = 8;
+
 /// Attempts (fresh streams) at one descent step while it ends near misses.
 const DESCENT_ATTEMPTS: usize = 4;
 
@@ -91,12 +98,17 @@ pub fn solve_anytime_with(
     }
     let mut run = Run::new(&search, anytime, repair, s0.mismatch);
     run.constructive();
+    // Large figures: the level search is slow there, so the constructive
+    // step looks ahead (the pilot method).
+    let cells = figures[0].len();
+    if cells >= coarse::MIN_CELLS && !search.stopped() {
+        run.pilot();
+    }
     if !search.stopped() {
         run.sectors();
     }
     // Large figures: the constructive step leaves small pieces that the
     // level search rarely merges; regroup them exactly.
-    let cells = figures[0].len();
     let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
     if large && !search.stopped() {
         run.regroup();
@@ -241,6 +253,44 @@ impl<'r, 'a> Run<'r, 'a> {
                 };
                 let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
                 debug_assert!(score.valid, "the greedy dissection is valid");
+                search.judge(&cand, &mut score);
+                if score.valid {
+                    let level = cand.k - 1;
+                    self.inc.improve(search, cand, score, level, 0, Via::Greedy);
+                }
+            }
+        }
+    }
+
+    /// The pilot method on the greedy ([`greedy::pilot_until`], connected
+    /// choice): every figure as the pivot, both ways of keeping
+    /// components; each one with fewer pieces is an improvement. Stops with
+    /// the run.
+    fn pilot(&mut self) {
+        let search = self.search;
+        'styles: for divisor in [1, 2] {
+            for pivot in 0..search.figures.len() {
+                if search.stopped() {
+                    break 'styles;
+                }
+                let style = greedy::GreedyStyle {
+                    pivot,
+                    divisor,
+                    choice: greedy::Choice::Connected,
+                };
+                let found = search.install(|| {
+                    greedy::pilot_until(
+                        &search.problem,
+                        style,
+                        PILOT_WIDTH,
+                        PILOT_DEPTH,
+                        search.stop,
+                    )
+                });
+                let Some(mut cand) = found else {
+                    break 'styles;
+                };
+                let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
                 search.judge(&cand, &mut score);
                 if score.valid {
                     let level = cand.k - 1;

@@ -57,41 +57,133 @@ pub(crate) fn greedy_until(
     style: GreedyStyle,
     stop: &AtomicBool,
 ) -> Option<Candidate> {
-    let shapes = &problem.shapes;
-    let nf = shapes.len();
-    let pivot = style.pivot.min(nf - 1);
-    let n = shapes[0].len();
-    let mut labels: Vec<Vec<u16>> = shapes.iter().map(|s| vec![FREE; s.len()]).collect();
-    let mut left = n;
-    let mut k: u16 = 0;
-    while left > 0 {
-        if stop.load(Ordering::Relaxed) {
-            return None;
+    let mut state = State::new(problem, style);
+    state.finish(stop)?;
+    Some(state.into_candidate())
+}
+
+/// The pilot method on the greedy: at each of the first `depth` steps, the
+/// best `width` motions of the first other figure (by the connected
+/// choice's score) are each taken and the dissection finished greedily;
+/// the step whose finished dissection has the fewest pieces is kept (the
+/// first on ties). `None` when `stop` is raised before it ends.
+pub(crate) fn pilot_until(
+    problem: &Problem,
+    style: GreedyStyle,
+    width: usize,
+    depth: usize,
+    stop: &AtomicBool,
+) -> Option<Candidate> {
+    let mut state = State::new(problem, style);
+    let other = (0..problem.shapes.len()).find(|&f| f != state.pivot)?;
+    let mut best: Option<Candidate> = None;
+    for _ in 0..depth {
+        if state.left == 0 {
+            break;
         }
-        let (common, motions) = common_part_by(problem, pivot, &labels, style.choice);
+        let cells = state.free_pivot_cells();
+        let motions = ranked_motions(problem, state.pivot, &cells, other, &state.labels[other]);
+        let mut chosen: Option<(usize, State)> = None;
+        for &m in motions.iter().take(width.max(1)) {
+            let mut next = state.clone();
+            next.step(Some((other, m)));
+            let mut done = next.clone();
+            done.finish(stop)?;
+            let pieces = done.k as usize;
+            if best.as_ref().is_none_or(|b| pieces < b.k) {
+                best = Some(done.into_candidate());
+            }
+            if chosen.as_ref().is_none_or(|(p, _)| pieces < *p) {
+                chosen = Some((pieces, next));
+            }
+        }
+        state = chosen?.1;
+    }
+    if state.left > 0 {
+        state.finish(stop)?;
+    }
+    let last = state.into_candidate();
+    Some(match best {
+        Some(b) if b.k <= last.k => b,
+        _ => last,
+    })
+}
+
+/// A greedy dissection under way: the labels given so far.
+#[derive(Clone)]
+struct State<'p> {
+    problem: &'p Problem,
+    style: GreedyStyle,
+    pivot: usize,
+    labels: Vec<Vec<u16>>,
+    left: usize,
+    k: u16,
+}
+
+impl<'p> State<'p> {
+    fn new(problem: &'p Problem, style: GreedyStyle) -> State<'p> {
+        let shapes = &problem.shapes;
+        State {
+            problem,
+            style,
+            pivot: style.pivot.min(shapes.len() - 1),
+            labels: shapes.iter().map(|s| vec![FREE; s.len()]).collect(),
+            left: shapes[0].len(),
+            k: 0,
+        }
+    }
+
+    /// The pivot's cells no piece holds yet.
+    fn free_pivot_cells(&self) -> Vec<u32> {
+        (0..self.labels[self.pivot].len() as u32)
+            .filter(|&c| self.labels[self.pivot][c as usize] == FREE)
+            .collect()
+    }
+
+    /// Steps until every cell is in a piece; `None` when stopped.
+    fn finish(&mut self, stop: &AtomicBool) -> Option<()> {
+        while self.left > 0 {
+            if stop.load(Ordering::Relaxed) {
+                return None;
+            }
+            self.step(None);
+        }
+        Some(())
+    }
+
+    /// One step: the common part (with figure `forced.0`'s motion
+    /// `forced.1` when given), its kept components cut as pieces.
+    fn step(&mut self, forced: Option<(usize, (usize, Point))>) {
+        let (problem, pivot) = (self.problem, self.pivot);
+        let shapes = &problem.shapes;
+        let (common, motions) =
+            common_part_with(problem, pivot, &self.labels, self.style.choice, forced);
         debug_assert!(!common.is_empty(), "a single cell always fits");
         let comps = components(&shapes[pivot], &common);
         let largest = comps.iter().map(Vec::len).max().unwrap_or(0);
-        let keep = (largest / style.divisor.max(1)).max(1);
+        let keep = (largest / self.style.divisor.max(1)).max(1);
         for comp in comps.into_iter().filter(|c| c.len() >= keep) {
             for &c in &comp {
-                labels[pivot][c as usize] = k;
+                self.labels[pivot][c as usize] = self.k;
                 for (f, m) in motions.iter().enumerate() {
                     if let Some((s, t)) = m {
                         let p = problem.geo.syms[*s].apply(shapes[pivot].point(c));
                         let j = shapes[f].lookup(p + *t).expect("kept cells land inside");
-                        labels[f][j as usize] = k;
+                        self.labels[f][j as usize] = self.k;
                     }
                 }
             }
-            left -= comp.len();
-            k += 1;
+            self.left -= comp.len();
+            self.k += 1;
         }
     }
-    Some(Candidate {
-        labels,
-        k: k as usize,
-    })
+
+    fn into_candidate(self) -> Candidate {
+        Candidate {
+            labels: self.labels,
+            k: self.k as usize,
+        }
+    }
 }
 
 /// The pivot's free cells whose images are free in every other figure
@@ -112,6 +204,17 @@ pub(crate) fn common_part_by(
     labels: &[Vec<u16>],
     choice: Choice,
 ) -> (Vec<u32>, Vec<Option<(usize, Point)>>) {
+    common_part_with(problem, pivot, labels, choice, None)
+}
+
+/// [`common_part_by`], figure `forced.0` moved by `forced.1` when given.
+fn common_part_with(
+    problem: &Problem,
+    pivot: usize,
+    labels: &[Vec<u16>],
+    choice: Choice,
+    forced: Option<(usize, (usize, Point))>,
+) -> (Vec<u32>, Vec<Option<(usize, Point)>>) {
     let shapes = &problem.shapes;
     let nf = shapes.len();
     let mut common: Vec<u32> = (0..shapes[pivot].len() as u32)
@@ -119,7 +222,10 @@ pub(crate) fn common_part_by(
         .collect();
     let mut motions: Vec<Option<(usize, Point)>> = vec![None; nf];
     for f in (0..nf).filter(|&f| f != pivot) {
-        let (s, t) = best_motion(problem, pivot, &common, f, &labels[f], choice);
+        let (s, t) = match forced {
+            Some((g, m)) if g == f => m,
+            _ => best_motion(problem, pivot, &common, f, &labels[f], choice),
+        };
         let sym = problem.geo.syms[s];
         common.retain(|&c| {
             let p = sym.apply(shapes[pivot].point(c));
@@ -157,6 +263,69 @@ fn best_motion(
     to_labels: &[u16],
     choice: Choice,
 ) -> (usize, Point) {
+    match choice {
+        Choice::Overlap => {
+            let mut top = (0u32, 0usize, [0i32; 3]);
+            for b in candidate_votes(problem, from, cells, to, to_labels, 1) {
+                if b.0 > top.0 {
+                    top = b;
+                }
+            }
+            (top.1, Point::from(top.2))
+        }
+        Choice::Connected => ranked_motions(problem, from, cells, to, to_labels)
+            .first()
+            .copied()
+            .unwrap_or((0, Point::from([0, 0, 0]))),
+    }
+}
+
+/// The motions of [`Choice::Connected`]'s candidates, best first: the
+/// largest component of the common part, then the most cells, then the
+/// candidates' order.
+fn ranked_motions(
+    problem: &Problem,
+    from: usize,
+    cells: &[u32],
+    to: usize,
+    to_labels: &[u16],
+) -> Vec<(usize, Point)> {
+    use rayon::prelude::*;
+    let src = &problem.shapes[from];
+    let dst = &problem.shapes[to];
+    let in_free = |p: Point| dst.lookup(p).is_some_and(|j| to_labels[j as usize] == FREE);
+    let all = candidate_votes(problem, from, cells, to, to_labels, CANDIDATES);
+    let mut scored: Vec<((usize, usize), usize)> = all
+        .par_iter()
+        .enumerate()
+        .map(|(i, &(_, s, t))| {
+            let (sym, t) = (problem.geo.syms[s], Point::from(t));
+            let common: Vec<u32> = cells
+                .iter()
+                .copied()
+                .filter(|&c| in_free(sym.apply(src.point(c)) + t))
+                .collect();
+            let largest = components(src, &common).iter().map(Vec::len).max();
+            ((largest.unwrap_or(0), common.len()), i)
+        })
+        .collect();
+    scored.sort_by_key(|&(score, i)| (std::cmp::Reverse(score), i));
+    scored
+        .into_iter()
+        .map(|(_, i)| (all[i].1, Point::from(all[i].2)))
+        .collect()
+}
+
+/// The best `take` translations by votes of every class of symmetries
+/// (see [`best_motion`]), classes in symmetry order.
+fn candidate_votes(
+    problem: &Problem,
+    from: usize,
+    cells: &[u32],
+    to: usize,
+    to_labels: &[u16],
+    take: usize,
+) -> Vec<(u32, usize, [i32; 3])> {
     use rayon::prelude::*;
     let src = &problem.shapes[from];
     let dst = &problem.shapes[to];
@@ -179,45 +348,11 @@ fn best_motion(
     // figures every `stride`-th cell votes (the count of a translation then
     // estimates its overlap), which keeps a step linear in the cells.
     let stride = (cells.len() * free.len()).div_ceil(VOTE_PAIRS).max(1);
-    let take = match choice {
-        Choice::Overlap => 1,
-        Choice::Connected => CANDIDATES,
-    };
     let best: Vec<Vec<(u32, usize, [i32; 3])>> = reps
         .par_iter()
         .map(|&s| votes_of(problem, &source, &free, stride, s, take))
         .collect();
-    let mut top = (0u32, 0usize, [0i32; 3]);
-    for b in best.iter().flatten() {
-        if b.0 > top.0 {
-            top = *b;
-        }
-    }
-    if choice == Choice::Connected {
-        let all: Vec<(u32, usize, [i32; 3])> = best.iter().flatten().copied().collect();
-        let scored: Vec<((usize, usize), usize)> = all
-            .par_iter()
-            .enumerate()
-            .map(|(i, &(_, s, t))| {
-                let (sym, t) = (syms[s], Point::from(t));
-                let common: Vec<u32> = cells
-                    .iter()
-                    .copied()
-                    .filter(|&c| in_free(sym.apply(src.point(c)) + t))
-                    .collect();
-                let largest = components(src, &common).iter().map(Vec::len).max();
-                ((largest.unwrap_or(0), common.len()), i)
-            })
-            .collect();
-        // The largest component, then the most cells, then the first.
-        if let Some(&(_, i)) = scored
-            .iter()
-            .max_by_key(|(score, i)| (*score, std::cmp::Reverse(*i)))
-        {
-            top = all[i];
-        }
-    }
-    (top.1, Point::from(top.2))
+    best.into_iter().flatten().collect()
 }
 
 /// The `take` translations carrying the most of `source` (every

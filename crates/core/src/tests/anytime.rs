@@ -119,6 +119,47 @@ fn the_connected_choice_keeps_the_largest_component() {
     }
 }
 
+/// The pilot method gives a valid dissection with no more pieces than the
+/// greedy of the same style (its first trial finishes that greedy).
+#[test]
+fn the_pilot_is_valid_and_never_worse_than_its_greedy() {
+    use crate::solver::greedy::pilot_until;
+    let cases: &[(LatticeKind, &[&str])] = &[
+        (
+            LatticeKind::Square,
+            &["AAA.|AAAA|AAAA|.AAA", "AAAAAAA|AAAAAAA"],
+        ),
+        (
+            LatticeKind::Cubic,
+            &["AAA|A.A|AAA/A..|...|..A", "AAAAA|AAAAA"],
+        ),
+    ];
+    for (lattice, figures) in cases {
+        let (figs, problem, _) = candidate(*lattice, true, figures);
+        for divisor in [1, 2] {
+            let style = GreedyStyle {
+                pivot: 0,
+                divisor,
+                choice: Choice::Connected,
+            };
+            let plain = greedy(&problem, style);
+            let pilot = pilot_until(&problem, style, 3, 4, &AtomicBool::new(false)).unwrap();
+            assert!(
+                verified(*lattice, true, &figs, &pilot),
+                "{figures:?} {style:?}"
+            );
+            assert!(pilot.k <= plain.k, "{figures:?}: {} > {}", pilot.k, plain.k);
+        }
+    }
+    let (_, problem, _) = candidate(LatticeKind::Square, true, &["AA|AA", "AAAA"]);
+    let style = GreedyStyle {
+        pivot: 0,
+        divisor: 1,
+        choice: Choice::Connected,
+    };
+    assert!(pilot_until(&problem, style, 2, 2, &AtomicBool::new(true)).is_none());
+}
+
 /// Checks what the repairer is handed and returns a fixed answer.
 struct Oracle {
     answer: Vec<Vec<Vec<Cell>>>,
