@@ -66,7 +66,6 @@ pub use options::{
 pub use repair::ExactRepair;
 pub use report::{End, Improvement, LowerBound, Ranking, Report, Solution, Source};
 pub use run::{
-    check, explorer, run, run_with, EngineError, EngineEvent, EngineObserver, Phase,
-    SLIVER_CELLS,
+    check, explorer, run, run_with, EngineError, EngineEvent, EngineObserver, Phase, SLIVER_CELLS,
 };
 pub use verified::Verified;
