@@ -276,24 +276,49 @@ impl Overlaps {
     ) -> Option<Overlaps> {
         let (ilo, ihi) = bounds(images);
         let (tlo, thi) = bounds(target);
-        let m = inst.modulus;
-        let mut lo = [0i32; 3];
+        let m = i64::from(inst.modulus);
+        let mut lo = [0i64; 3];
         let mut size = [1usize; 3];
+        let mut boxed = Some(1usize);
         for d in 0..inst.dim {
-            lo[d] = (tlo[d] - ihi[d]).div_euclid(m);
-            size[d] = ((thi[d] - ilo[d]).div_euclid(m) - lo[d] + 1) as usize;
+            lo[d] = (i64::from(tlo[d]) - i64::from(ihi[d])).div_euclid(m);
+            let hi = (i64::from(thi[d]) - i64::from(ilo[d])).div_euclid(m);
+            size[d] = usize::try_from(hi - lo[d] + 1).unwrap_or(usize::MAX);
+            boxed = boxed.and_then(|b| b.checked_mul(size[d]));
         }
-        let index = |t: Point| -> Option<usize> {
-            if !inst.is_translation(t) {
-                return None;
+        let pairs = images.len().saturating_mul(target.len());
+        match boxed {
+            // The box of translations is small next to the pairs: a
+            // counting sort over it.
+            Some(b) if b <= pairs.saturating_mul(4).saturating_add(4096) => {
+                let index = |t: Point| -> Option<usize> {
+                    if !inst.is_translation(t) {
+                        return None;
+                    }
+                    let mut i = 0usize;
+                    for d in (0..inst.dim).rev() {
+                        i = i * size[d] + (i64::from(t[d]) / m - lo[d]) as usize;
+                    }
+                    Some(i)
+                };
+                Self::counted(images, target, b, index, interrupted)
             }
-            let mut i = 0usize;
-            for d in (0..inst.dim).rev() {
-                i = i * size[d] + (t[d] / m - lo[d]) as usize;
-            }
-            Some(i)
-        };
-        let mut starts = vec![0u32; size[0] * size[1] * size[2] + 1];
+            // Figures far apart: the box would be huge (memory), so the
+            // pairs are sorted by translation instead.
+            _ => Self::sorted(inst, images, target, interrupted),
+        }
+    }
+
+    /// The pairs grouped by a counting sort over `boxed` translation
+    /// indices (`index`).
+    fn counted(
+        images: &[Point],
+        target: &[Point],
+        boxed: usize,
+        index: impl Fn(Point) -> Option<usize>,
+        interrupted: &dyn Fn() -> bool,
+    ) -> Option<Overlaps> {
+        let mut starts = vec![0u32; boxed + 1];
         for (c, gp) in images.iter().enumerate() {
             if c % 256 == 255 && interrupted() {
                 return None;
@@ -320,6 +345,39 @@ impl Overlaps {
         Some(Overlaps { starts, cells })
     }
 
+    /// The pairs grouped by sorting them by translation (memory in the
+    /// pairs, whatever the figures' spread).
+    fn sorted(
+        inst: &Instance,
+        images: &[Point],
+        target: &[Point],
+        interrupted: &dyn Fn() -> bool,
+    ) -> Option<Overlaps> {
+        let mut pairs: Vec<(Point, u32)> = Vec::new();
+        for (c, gp) in images.iter().enumerate() {
+            if c % 256 == 255 && interrupted() {
+                return None;
+            }
+            for q in target {
+                let t = *q - *gp;
+                if inst.is_translation(t) {
+                    pairs.push((t, c as u32));
+                }
+            }
+        }
+        pairs.sort_unstable();
+        let mut starts = vec![0u32];
+        let mut cells = Vec::with_capacity(pairs.len());
+        for (i, &(t, c)) in pairs.iter().enumerate() {
+            if i > 0 && pairs[i - 1].0 != t {
+                starts.push(cells.len() as u32);
+            }
+            cells.push(c);
+        }
+        starts.push(cells.len() as u32);
+        Some(Overlaps { starts, cells })
+    }
+
     /// Every translation's cells, in ascending order.
     fn lists(&self) -> impl Iterator<Item = &[u32]> {
         self.starts
@@ -339,4 +397,40 @@ fn bounds(points: &[Point]) -> ([i32; 3], [i32; 3]) {
         }
     }
     (lo, hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dissect_core::{Figure, LatticeKind};
+
+    /// Figures whose cells lie far apart would need a huge box of
+    /// translations: the pairs are sorted instead, and both ways give the
+    /// same graph.
+    #[test]
+    fn far_apart_cells_give_the_same_graph_without_a_huge_box() {
+        let far = 1 << 28;
+        let cells = |v: &[[i32; 3]]| Figure::new(LatticeKind::Cubic, v.iter().copied()).unwrap();
+        let a = cells(&[[0, 0, 0], [1, 0, 0], [far, far, far], [far, far, far + 1]]);
+        let b = cells(&[[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]);
+        let inst = Instance::new(&[a, b], true, 0);
+        let g = Incompatibility::of_shape(&inst, 0, &|| false).expect("not interrupted");
+        // The two far components are apart; each pair inside one is not.
+        assert!(g.apart(0, 2) && g.apart(1, 3));
+        assert!(!g.apart(0, 1) && !g.apart(2, 3));
+        let images: Vec<Point> = inst.shapes[0].points.clone();
+        let target = &inst.shapes[1].points;
+        let sorted = Overlaps::sorted(&inst, &images, target, &|| false).unwrap();
+        let near = &inst.shapes[1].points;
+        let counted = Overlaps::of(&inst, near, target, &|| false).unwrap();
+        let by_sort = Overlaps::sorted(&inst, near, target, &|| false).unwrap();
+        let lists = |o: &Overlaps| -> Vec<Vec<u32>> {
+            o.lists()
+                .filter(|l| !l.is_empty())
+                .map(<[u32]>::to_vec)
+                .collect()
+        };
+        assert_eq!(lists(&counted), lists(&by_sort));
+        assert!(!lists(&sorted).is_empty());
+    }
 }
