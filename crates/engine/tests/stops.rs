@@ -15,8 +15,9 @@ use dissect_engine::{
     run, End, EngineEvent, EngineObserver, Phase, Rank, Report, RunConfig, RunOptions, TimeLimit,
 };
 
-/// A second to stop, and half a second for a loaded machine's scheduling.
-const LATE: Duration = Duration::from_millis(1500);
+/// The bound: a phase stops within one second (measured: 2-33 ms
+/// after the stop on a loaded 2-core machine).
+const LATE: Duration = Duration::from_secs(1);
 
 fn square(rows: &[&str]) -> Figure {
     parse_figure(&(rows.join("\n") + "\n"), LatticeKind::Square).expect("test figure")
