@@ -464,18 +464,7 @@ mod tests {
     /// leaves along y): the block goes first, then B.
     #[test]
     fn the_3d_order_is_the_plan_reversed() {
-        let l = LatticeKind::Cubic.lattice();
-        let b: Vec<Cell> = vec![[1, 1, 1], [2, 1, 1], [1, 1, 2]];
-        let free = [[3, 1, 1], [4, 1, 1], [2, 1, 2], [3, 1, 2], [4, 1, 2]];
-        let window = [[3, 2, 1], [4, 2, 1], [3, 2, 2], [4, 2, 2]];
-        let a: Vec<Cell> = l
-            .cells_in_box([0, 0, 0], [5, 2, 3])
-            .into_iter()
-            .filter(|c| !b.contains(c) && !free.contains(c) && !window.contains(c))
-            .collect();
-        // A loose cube on top of the block's far end, taken off first.
-        let c: Vec<Cell> = vec![[0, 0, 4]];
-        let plan = figure_plan(LatticeKind::Cubic, &[a, b, c]);
+        let plan = figure_plan(LatticeKind::Cubic, &channel_block());
         let (order, level) = (plan.order, plan.level);
         assert_eq!(level, Some(1));
         assert_eq!(order.len(), 3);
