@@ -18,8 +18,19 @@ use crate::solver::{Event, Observer, Options, Outcome, Repair, SolveError, Via};
 /// Levels climbed at full resolution from a lifted coarse candidate.
 const CLIMB: usize = 2;
 
-/// Motions the pilot method tries at each step it looks ahead.
+/// Motions the pilot method tries at each step it looks ahead, the first
+/// time; each later pilot doubles it ([`Run::pilot`]).
 const PILOT_WIDTH: usize = 4;
+
+/// The widest pilot.
+const PILOT_MAX_WIDTH: usize = 256;
+
+/// Pilots run before the level search whatever they find (widths 4 to
+/// 32); a wider one runs there only while the last one improved. On voxel
+/// figures the pilot finds what the level search does not (BENCHMARKS,
+/// "3D at scale"), and a width that finds nothing is often followed by
+/// one that does.
+const PILOT_EAGER: usize = 4;
 
 /// Steps the pilot method looks ahead at (the first ones: they cut the
 /// largest pieces).
@@ -102,7 +113,7 @@ pub fn solve_anytime_with(
     // step looks ahead (the pilot method).
     let cells = figures[0].len();
     if cells >= coarse::MIN_CELLS && !search.stopped() {
-        run.pilot();
+        run.pilots();
     }
     if !search.stopped() {
         run.sectors();
@@ -134,6 +145,11 @@ pub fn solve_anytime_with(
         }
         let fresh = search.fresh();
         let mut improved = run.round(round, large)?;
+        // Large figures: the level search there rarely beats a wider
+        // pilot, so every round also widens it (until its widest).
+        if large && !search.stopped() {
+            improved |= run.pilot();
+        }
         if improved && large && !search.stopped() {
             let before = run.inc.pieces();
             run.regroup();
@@ -184,6 +200,8 @@ struct Run<'r, 'a> {
     below: usize,
     /// The best dissection so far and the outcome.
     inc: Incumbent,
+    /// The width of the next pilot ([`Run::pilot`]).
+    pilot_width: usize,
 }
 
 impl<'r, 'a> Run<'r, 'a> {
@@ -214,6 +232,7 @@ impl<'r, 'a> Run<'r, 'a> {
             // The plateau (several solutions) searches at the best count too.
             below: usize::from(!anytime.plateau),
             inc: Incumbent::new(outcome, max_pieces),
+            pilot_width: PILOT_WIDTH,
         }
     }
 
@@ -263,11 +282,19 @@ impl<'r, 'a> Run<'r, 'a> {
     }
 
     /// The pilot method on the greedy ([`greedy::pilot_until`], connected
-    /// choice): every figure as the pivot, both ways of keeping
-    /// components; each one with fewer pieces is an improvement. Stops with
-    /// the run.
-    fn pilot(&mut self) {
+    /// choice) at the current width, which then doubles: every figure as
+    /// the pivot, both ways of keeping components; each one with fewer
+    /// pieces is an improvement. Whether one was; `false` once the width
+    /// is past [`PILOT_MAX_WIDTH`] or a pilot took every motion a step
+    /// ranks (a wider one would repeat it). Stops with the run.
+    fn pilot(&mut self) -> bool {
         let search = self.search;
+        let width = self.pilot_width;
+        if width > PILOT_MAX_WIDTH {
+            return false;
+        }
+        let mut improved = false;
+        let mut truncated = false;
         'styles: for divisor in [1, 2] {
             for pivot in 0..search.figures.len() {
                 if search.stopped() {
@@ -279,23 +306,33 @@ impl<'r, 'a> Run<'r, 'a> {
                     choice: greedy::Choice::Connected,
                 };
                 let found = search.install(|| {
-                    greedy::pilot_until(
-                        &search.problem,
-                        style,
-                        PILOT_WIDTH,
-                        PILOT_DEPTH,
-                        search.stop,
-                    )
+                    greedy::pilot_until(&search.problem, style, width, PILOT_DEPTH, search.stop)
                 });
-                let Some(mut cand) = found else {
+                let Some((mut cand, more)) = found else {
                     break 'styles;
                 };
+                truncated |= more;
                 let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
                 search.judge(&cand, &mut score);
                 if score.valid {
                     let level = cand.k - 1;
-                    self.inc.improve(search, cand, score, level, 0, Via::Greedy);
+                    improved |= self.inc.improve(search, cand, score, level, 0, Via::Greedy);
                 }
+            }
+        }
+        self.pilot_width = if truncated { width * 2 } else { usize::MAX };
+        improved
+    }
+
+    /// Pilots of growing width before the level search: the first
+    /// [`PILOT_EAGER`] whatever they find, then while each improves.
+    fn pilots(&mut self) {
+        let mut ran = 0;
+        while !self.search.stopped() && self.pilot_width <= PILOT_MAX_WIDTH {
+            let improved = self.pilot();
+            ran += 1;
+            if ran >= PILOT_EAGER && !improved {
+                break;
             }
         }
     }

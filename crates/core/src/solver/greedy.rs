@@ -66,23 +66,27 @@ pub(crate) fn greedy_until(
 /// best `width` motions of the first other figure (by the connected
 /// choice's score) are each taken and the dissection finished greedily;
 /// the step whose finished dissection has the fewest pieces is kept (the
-/// first on ties). `None` when `stop` is raised before it ends.
+/// first on ties). With it, whether some step had more motions than
+/// `width` (a wider pilot would look at more). `None` when `stop` is raised
+/// before it ends.
 pub(crate) fn pilot_until(
     problem: &Problem,
     style: GreedyStyle,
     width: usize,
     depth: usize,
     stop: &AtomicBool,
-) -> Option<Candidate> {
+) -> Option<(Candidate, bool)> {
     let mut state = State::new(problem, style);
     let other = (0..problem.shapes.len()).find(|&f| f != state.pivot)?;
     let mut best: Option<Candidate> = None;
+    let mut truncated = false;
     for _ in 0..depth {
         if state.left == 0 {
             break;
         }
         let cells = state.free_pivot_cells();
         let motions = ranked_motions(problem, state.pivot, &cells, other, &state.labels[other]);
+        truncated |= motions.len() > width.max(1);
         let mut chosen: Option<(usize, State)> = None;
         for &m in motions.iter().take(width.max(1)) {
             let mut next = state.clone();
@@ -103,10 +107,11 @@ pub(crate) fn pilot_until(
         state.finish(stop)?;
     }
     let last = state.into_candidate();
-    Some(match best {
+    let found = match best {
         Some(b) if b.k <= last.k => b,
         _ => last,
-    })
+    };
+    Some((found, truncated))
 }
 
 /// A greedy dissection under way: the labels given so far.

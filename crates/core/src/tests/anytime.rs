@@ -143,12 +143,22 @@ fn the_pilot_is_valid_and_never_worse_than_its_greedy() {
                 choice: Choice::Connected,
             };
             let plain = greedy(&problem, style);
-            let pilot = pilot_until(&problem, style, 3, 4, &AtomicBool::new(false)).unwrap();
+            let (pilot, _) = pilot_until(&problem, style, 3, 4, &AtomicBool::new(false)).unwrap();
             assert!(
                 verified(*lattice, true, &figs, &pilot),
                 "{figures:?} {style:?}"
             );
             assert!(pilot.k <= plain.k, "{figures:?}: {} > {}", pilot.k, plain.k);
+            // As wide as the motions a step ranks: nothing was left out,
+            // and the pilot says so.
+            let (_, truncated) =
+                pilot_until(&problem, style, 100_000, 4, &AtomicBool::new(false)).unwrap();
+            assert!(!truncated, "{figures:?} {style:?}");
+            // One motion per step leaves others out: a wider pilot has
+            // something to add.
+            let (_, truncated) =
+                pilot_until(&problem, style, 1, 4, &AtomicBool::new(false)).unwrap();
+            assert!(truncated, "{figures:?} {style:?}");
         }
     }
     let (_, problem, _) = candidate(LatticeKind::Square, true, &["AA|AA", "AAAA"]);
