@@ -25,12 +25,12 @@ const PILOT_WIDTH: usize = 4;
 /// The widest pilot.
 const PILOT_MAX_WIDTH: usize = 256;
 
-/// Pilots run before the level search whatever they find (widths 4 to
-/// 32); a wider one runs there only while the last one improved. On voxel
-/// figures the pilot finds what the level search does not (BENCHMARKS,
-/// "3D at scale"), and a width that finds nothing is often followed by
-/// one that does.
-const PILOT_EAGER: usize = 4;
+/// Pilots up to this width run before the level search whatever they
+/// find; a wider one runs there only while the last one improved. On
+/// voxel figures the pilot finds what the level search does not
+/// (BENCHMARKS, "3D at scale"), and a width that finds nothing is often
+/// followed by one that does.
+const PILOT_EAGER_WIDTH: usize = 32;
 
 /// Steps the pilot method looks ahead at (the first ones: they cut the
 /// largest pieces).
@@ -113,10 +113,15 @@ pub fn solve_anytime_with(
     // step looks ahead (the pilot method).
     let cells = figures[0].len();
     if cells >= coarse::MIN_CELLS && !search.stopped() {
-        run.pilots();
+        run.pilot();
     }
+    // Figures that are mostly alike get their sectors early (they take a
+    // second); the wider pilots follow.
     if !search.stopped() {
         run.sectors();
+    }
+    if cells >= coarse::MIN_CELLS && !search.stopped() {
+        run.pilots();
     }
     // Large figures: the constructive step leaves small pieces that the
     // level search rarely merges; regroup them exactly.
@@ -324,16 +329,15 @@ impl<'r, 'a> Run<'r, 'a> {
         improved
     }
 
-    /// Pilots of growing width before the level search: the first
-    /// [`PILOT_EAGER`] whatever they find, then while each improves.
+    /// Pilots of growing width before the level search: up to
+    /// [`PILOT_EAGER_WIDTH`] whatever they find, then while each improves.
     fn pilots(&mut self) {
-        let mut ran = 0;
-        while !self.search.stopped() && self.pilot_width <= PILOT_MAX_WIDTH {
-            let improved = self.pilot();
-            ran += 1;
-            if ran >= PILOT_EAGER && !improved {
-                break;
-            }
+        let mut improved = true;
+        while !self.search.stopped()
+            && self.pilot_width <= PILOT_MAX_WIDTH
+            && (self.pilot_width <= PILOT_EAGER_WIDTH || improved)
+        {
+            improved = self.pilot();
         }
     }
 
