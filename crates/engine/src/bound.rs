@@ -65,7 +65,7 @@ pub struct BoundReport {
     /// piece count and estimated bytes, and the cap.
     pub too_large: Option<(usize, u64, u64)>,
     /// The cells of the largest figure when it is over the exact search's
-    /// size (`dissect_exact::bound::FULL_GRAPH_MAX_CELLS`): no SAT search
+    /// size (`dissect_exact::bound::SAT_MAX_CELLS`): no SAT search
     /// ran, the bound is the cheap one.
     pub too_many_cells: Option<usize>,
     /// Seconds from the start.

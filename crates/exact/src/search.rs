@@ -13,7 +13,7 @@ use crate::connectivity_cut::cuts;
 use crate::incompatible_clique::Incompatibility;
 use crate::instance::Instance;
 use crate::motion::MotionSet;
-use crate::placement_encoding::{encode, estimate, EncodingSize};
+use crate::placement_encoding::{encode, estimate, EncodingSize, MotionEncoding};
 use crate::reachability_encoding::{add_connectivity, connectivity_size};
 use crate::sat_backend::Sat;
 use crate::ExactError;
@@ -70,6 +70,10 @@ pub struct ExactOptions {
     /// then also refuted by SAT at `L - 1` pieces, so that it has a
     /// certificate when the encoding refutes it.
     pub certify: bool,
+    /// How motions are encoded ([`MotionEncoding::Auto`]: the direct
+    /// encoding unless the shift chain is much smaller; always direct
+    /// under constraints).
+    pub motion_encoding: MotionEncoding,
 }
 
 /// The default of [`ExactOptions::max_encoding_bytes`]: 512 MiB.
@@ -81,7 +85,7 @@ pub const DEFAULT_MAX_ENCODING_BYTES: u64 = 512 << 20;
 pub enum Limit {
     /// [`ExactOptions::conflict_budget`] was spent.
     ConflictBudget,
-    /// A figure has more than [`FULL_GRAPH_MAX_CELLS`](crate::bound::FULL_GRAPH_MAX_CELLS)
+    /// A figure has more than [`SAT_MAX_CELLS`](crate::bound::SAT_MAX_CELLS)
     /// cells: no SAT model is built, only the cheap bounds hold.
     Cells {
         /// The cells of the largest figure.
@@ -112,6 +116,7 @@ impl Default for ExactOptions {
             max_encoding_bytes: DEFAULT_MAX_ENCODING_BYTES,
             constraints: None,
             certify: false,
+            motion_encoding: MotionEncoding::Auto,
         }
     }
 }
@@ -240,6 +245,7 @@ struct Context<'a> {
     max_bytes: u64,
     constraints: Option<&'a dissect_puzzle::Constraints>,
     certify: bool,
+    motion_encoding: MotionEncoding,
     /// Conflicts spent so far.
     spent: std::cell::Cell<u64>,
 }
@@ -326,7 +332,12 @@ impl Context<'_> {
         let start = Instant::now();
         let interrupted =
             || self.stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
-        let estimate = estimate(self.inst, k, set, self.clique.len(), self.incompat);
+        let style = if self.constraints.is_some() {
+            MotionEncoding::Direct
+        } else {
+            self.motion_encoding
+        };
+        let estimate = estimate(self.inst, k, (set, style), self.clique.len(), self.incompat);
         let bytes = estimate.bytes(self.certify);
         if bytes > self.max_bytes {
             self.observer.on_event(&ExactEvent::TooLarge {
@@ -347,7 +358,7 @@ impl Context<'_> {
             self.inst,
             &mut sat,
             k,
-            set,
+            (set, style),
             self.clique,
             self.incompat,
             &interrupted,
@@ -474,7 +485,7 @@ pub fn search(
     let Some((mut inst, clique, incompat)) = model_inputs(figures, options.mirror, &mut cheap)
     else {
         let cells = figures.iter().map(Figure::len).max().unwrap_or(0);
-        if cells > crate::bound::FULL_GRAPH_MAX_CELLS && !interrupted() {
+        if cells > crate::bound::SAT_MAX_CELLS && !interrupted() {
             outcome.limit = Some(Limit::Cells { cells });
         } else {
             outcome.stopped = true;
@@ -496,6 +507,7 @@ pub fn search(
         max_bytes: options.max_encoding_bytes,
         constraints: options.constraints.as_ref(),
         certify: options.certify,
+        motion_encoding: options.motion_encoding,
         spent: std::cell::Cell::new(0),
     };
     let left = || {
@@ -684,22 +696,14 @@ pub fn dimacs_within(
     let mut cheap = cheap(figures, mirror, &|| false)?;
     let (inst, clique, incompat) =
         model_inputs(figures, mirror, &mut cheap).expect("not interrupted");
-    if let Some(e) = too_large(estimate(&inst, k, MotionSet::All, clique.len(), &incompat)) {
+    let all = (MotionSet::All, MotionEncoding::Auto);
+    if let Some(e) = too_large(estimate(&inst, k, all, clique.len(), &incompat)) {
         return Err(e);
     }
     let stop = AtomicBool::new(false);
     let mut sat = Sat::new(&stop, None);
     sat.record();
-    encode(
-        &inst,
-        &mut sat,
-        k,
-        MotionSet::All,
-        &clique,
-        &incompat,
-        &|| false,
-    )
-    .expect("not interrupted");
+    encode(&inst, &mut sat, k, all, &clique, &incompat, &|| false).expect("not interrupted");
     let (text, clauses) = sat.dimacs().expect("recording");
     Ok(Dimacs {
         text,
@@ -731,6 +735,8 @@ mod tests {
     use super::*;
     use dissect_core::io::parse_figure;
     use dissect_core::LatticeKind;
+
+    const DIRECT: (MotionSet, MotionEncoding) = (MotionSet::All, MotionEncoding::Direct);
 
     /// Parses `d.text`, checks its header against the clauses and solves it
     /// with the crate's own backend.
@@ -771,43 +777,18 @@ mod tests {
         let (inst, clique, incompat) = model_inputs(&figs, true, &mut cheap).expect("graphs");
         let stop = AtomicBool::new(false);
         for k in 1..=5 {
-            let est = estimate(&inst, k, MotionSet::All, clique.len(), &incompat);
+            let est = estimate(&inst, k, DIRECT, clique.len(), &incompat);
             let mut sat = Sat::new(&stop, None);
-            encode(
-                &inst,
-                &mut sat,
-                k,
-                MotionSet::All,
-                &clique,
-                &incompat,
-                &|| false,
-            )
-            .expect("not interrupted");
+            encode(&inst, &mut sat, k, DIRECT, &clique, &incompat, &|| false)
+                .expect("not interrupted");
             assert!(est.vars >= sat.vars(), "k={k}: {est:?} vs {}", sat.vars());
             assert!(est.clauses >= sat.clauses(), "k={k}: {est:?}");
             assert!(est.clauses <= 4 * sat.clauses(), "k={k}: {est:?}");
         }
         let mut sat = Sat::new(&stop, None);
-        assert!(encode(
-            &inst,
-            &mut sat,
-            3,
-            MotionSet::All,
-            &clique,
-            &incompat,
-            &|| true
-        )
-        .is_none());
-        let enc = encode(
-            &inst,
-            &mut sat,
-            3,
-            MotionSet::All,
-            &clique,
-            &incompat,
-            &|| false,
-        )
-        .expect("not interrupted");
+        assert!(encode(&inst, &mut sat, 3, DIRECT, &clique, &incompat, &|| true).is_none());
+        let enc = encode(&inst, &mut sat, 3, DIRECT, &clique, &incompat, &|| false)
+            .expect("not interrupted");
         assert!(!add_connectivity(
             &mut sat,
             &inst.shapes[0],
