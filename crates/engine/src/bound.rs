@@ -22,6 +22,12 @@ use crate::report::{End, LowerBound};
 use crate::run::{proof, EngineError, EngineEvent, EngineObserver, Forward};
 use crate::verified::Verified;
 
+/// The largest SAT encoding a bound builds (estimated bytes; the search's
+/// default is 512 MiB): 1.5 GiB, so that a bound with its encoding, the
+/// solver's learnt clauses and the rest of the process stays under 2 GiB
+/// (the shift chain keeps 3D pairs of 1,000 voxels well inside it).
+const BOUND_MAX_BYTES: u64 = 1536 << 20;
+
 /// How long a stopped bound waits for the search to return.
 const BOUND_GRACE: Duration = Duration::from_millis(300);
 
@@ -102,6 +108,7 @@ pub fn bound(
         deadline,
         max_pieces: config.max_pieces,
         certify: config.certify,
+        max_encoding_bytes: BOUND_MAX_BYTES,
         ..ExactOptions::default()
     };
     let cap = options.max_encoding_bytes;

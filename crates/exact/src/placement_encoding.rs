@@ -136,15 +136,16 @@ pub(crate) fn estimate(
     inst: &Instance,
     k: usize,
     (set, style): (MotionSet, MotionEncoding),
-    clique: usize,
+    clique_cells: &[usize],
     incompat: &[Incompatibility],
 ) -> EncodingSize {
+    let clique = clique_cells.len();
     if style == MotionEncoding::Auto {
         return estimate(
             inst,
             k,
-            (set, choose(inst, k, set, clique, incompat)),
-            clique,
+            (set, choose(inst, k, set, clique_cells, incompat)),
+            clique_cells,
             incompat,
         );
     }
@@ -168,7 +169,9 @@ pub(crate) fn estimate(
         let admitted: Vec<usize> = (0..inst.syms.len())
             .filter(|&g| set.admits(g, inst.syms[g].determinant()))
             .collect();
-        let (v, c) = crate::shift_encoding::shifts_size(inst, k, &admitted);
+        let q = clique.min(k);
+        let anchors = if q > 0 { &clique_cells[..q] } else { &[0][..] };
+        let (v, c) = crate::shift_encoding::shifts_size(inst, k, &admitted, anchors);
         return EncodingSize {
             vars: vars.saturating_add(v).min(usize::MAX as u64) as usize,
             clauses: clauses.saturating_add(c).min(usize::MAX as u64) as usize,
@@ -201,7 +204,7 @@ pub(crate) fn choose(
     inst: &Instance,
     k: usize,
     set: MotionSet,
-    clique: usize,
+    clique: &[usize],
     incompat: &[Incompatibility],
 ) -> MotionEncoding {
     let direct = estimate(inst, k, (set, MotionEncoding::Direct), clique, incompat).bytes(false);
@@ -232,7 +235,7 @@ pub(crate) fn encode(
     interrupted: &dyn Fn() -> bool,
 ) -> Option<Encoding> {
     let style = match style {
-        MotionEncoding::Auto => choose(inst, k, set, clique.len(), incompat),
+        MotionEncoding::Auto => choose(inst, k, set, clique, incompat),
         s => s,
     };
     let cell: Vec<Vec<Vec<i32>>> = inst

@@ -337,7 +337,7 @@ impl Context<'_> {
         } else {
             self.motion_encoding
         };
-        let estimate = estimate(self.inst, k, (set, style), self.clique.len(), self.incompat);
+        let estimate = estimate(self.inst, k, (set, style), self.clique, self.incompat);
         let bytes = estimate.bytes(self.certify);
         if bytes > self.max_bytes {
             self.observer.on_event(&ExactEvent::TooLarge {
@@ -697,7 +697,7 @@ pub fn dimacs_within(
     let (inst, clique, incompat) =
         model_inputs(figures, mirror, &mut cheap).expect("not interrupted");
     let all = (MotionSet::All, MotionEncoding::Auto);
-    if let Some(e) = too_large(estimate(&inst, k, all, clique.len(), &incompat)) {
+    if let Some(e) = too_large(estimate(&inst, k, all, &clique, &incompat)) {
         return Err(e);
     }
     let stop = AtomicBool::new(false);
@@ -777,7 +777,7 @@ mod tests {
         let (inst, clique, incompat) = model_inputs(&figs, true, &mut cheap).expect("graphs");
         let stop = AtomicBool::new(false);
         for k in 1..=5 {
-            let est = estimate(&inst, k, DIRECT, clique.len(), &incompat);
+            let est = estimate(&inst, k, DIRECT, &clique, &incompat);
             let mut sat = Sat::new(&stop, None);
             encode(&inst, &mut sat, k, DIRECT, &clique, &incompat, &|| false)
                 .expect("not interrupted");
@@ -808,6 +808,45 @@ mod tests {
         // An interrupted clique search still returns a clique (a bound).
         let c = incompat[0].clique(1_000_000, &|| true);
         assert!(!c.is_empty());
+    }
+
+    #[test]
+    fn the_shift_estimate_bounds_the_shift_encoding() {
+        let figs: Vec<Figure> = ["####\n#..#\n####\n", "#####\n#####\n"]
+            .iter()
+            .map(|t| parse_figure(t, LatticeKind::Square).expect("figure"))
+            .collect();
+        let cubes: Vec<Figure> = ["###\n#..\n\n##.\n...", "###\n###"]
+            .iter()
+            .map(|t| parse_figure(t, LatticeKind::Cubic).expect("figure"))
+            .collect();
+        let tri: Vec<Figure> = ["FF", "6C\n39"]
+            .iter()
+            .map(|t| parse_figure(t, LatticeKind::Tri4).expect("figure"))
+            .collect();
+        let shifts = (MotionSet::All, MotionEncoding::Shifts);
+        let stop = AtomicBool::new(false);
+        for figs in [&figs, &cubes, &tri] {
+            let mut cheap = cheap(figs, true, &|| false).expect("valid figures");
+            let (inst, clique, incompat) = model_inputs(figs, true, &mut cheap).expect("graphs");
+            for k in 1..=4 {
+                let est = estimate(&inst, k, shifts, &clique, &incompat);
+                let mut sat = Sat::new(&stop, None);
+                let enc = encode(&inst, &mut sat, k, shifts, &clique, &incompat, &|| false)
+                    .expect("not interrupted");
+                assert!(est.vars >= sat.vars(), "k={k}: {est:?} vs {}", sat.vars());
+                assert!(est.clauses >= sat.clauses(), "k={k}: {est:?}");
+                // Loose for one piece: its motions are taken up to the
+                // target's symmetries, which the estimate does not count.
+                let slack = if k == 1 { 8 } else { 4 };
+                assert!(
+                    est.clauses <= slack * sat.clauses(),
+                    "k={k}: {est:?} vs {}",
+                    sat.clauses()
+                );
+                assert!(enc.motions() > 0 && enc.motion.iter().flatten().all(Vec::is_empty));
+            }
+        }
     }
 
     #[test]

@@ -116,11 +116,11 @@ impl Chain {
 /// Counts of a chain for the size guard: (variables, clauses).
 fn chain_size(
     inst: &Instance,
-    to: usize,
-    g: usize,
+    (to, g): (usize, usize),
+    anchor: Option<usize>,
     keys: &[rustc_hash::FxHashSet<[i32; 3]>],
 ) -> (u64, u64) {
-    let chain = Chain::new(inst, to, g, None);
+    let chain = Chain::new(inst, to, g, anchor);
     let sym = &inst.syms[g];
     let mut level: Vec<Point> = inst.shapes[0]
         .points
@@ -159,20 +159,32 @@ fn chain_size(
 }
 
 /// An upper estimate of the variables and clauses of [`motions_by_shifts`]
-/// for every shape `f ≥ 1` and the symmetries `syms`, for `k` pieces.
-pub(crate) fn shifts_size(inst: &Instance, k: usize, syms: &[usize]) -> (u64, u64) {
+/// for every shape `f ≥ 1` and the symmetries `syms`, for `k` pieces of
+/// which the first ones are anchored at `anchors` (cells of shape 0).
+pub(crate) fn shifts_size(
+    inst: &Instance,
+    k: usize,
+    syms: &[usize],
+    anchors: &[usize],
+) -> (u64, u64) {
     let (mut vars, mut clauses) = (0u64, 0u64);
+    let anchored = anchors.len().min(k);
     for to in 1..inst.shapes.len() {
         let keys = level_keys(inst, to);
         for &g in syms {
-            let (v, c) = chain_size(inst, to, g, &keys);
-            vars = vars.saturating_add(v);
-            clauses = clauses.saturating_add(c);
+            let (v, c) = chain_size(inst, (to, g), None, &keys);
+            let free = (k - anchored) as u64;
+            vars = vars.saturating_add(v.saturating_mul(free));
+            clauses = clauses.saturating_add(c.saturating_mul(free));
+            for &a in &anchors[..anchored] {
+                let (v, c) = chain_size(inst, (to, g), Some(a), &keys);
+                vars = vars.saturating_add(v);
+                clauses = clauses.saturating_add(c);
+            }
         }
-        clauses = clauses.saturating_add(1);
+        clauses = clauses.saturating_add(k as u64);
     }
-    let k = k as u64;
-    (vars.saturating_mul(k), clauses.saturating_mul(k))
+    (vars, clauses)
 }
 
 /// Encodes the motions of piece `i` into shape `to` as a shift chain per

@@ -223,3 +223,42 @@ fn a_deadline_stops_a_large_encoding() {
         }
     }
 }
+
+/// Records the encodings the search builds.
+struct Encodings(std::sync::Mutex<Vec<(usize, dissect_exact::EncodingSize)>>);
+
+impl dissect_exact::ExactObserver for Encodings {
+    fn on_event(&self, event: &dissect_exact::ExactEvent) {
+        if let dissect_exact::ExactEvent::Encoded { pieces, size, .. } = event {
+            self.0.lock().expect("lock").push((*pieces, *size));
+        }
+    }
+}
+
+#[test]
+fn figures_over_the_full_graph_size_get_a_sat_model_by_shifts() {
+    // 676 cells each (over FULL_GRAPH_MAX_CELLS): no incompatibility graph,
+    // a SAT model all the same; one variable per motion would take about
+    // 1 GB here, the shift chain a few dozen MB. Two 13×26 halves.
+    let figs = square(&[rect(26, 26), rect(13, 52)]);
+    assert!(figs[0].len() > dissect_exact::bound::FULL_GRAPH_MAX_CELLS);
+    let options = ExactOptions {
+        mode: Mode::Minimum,
+        ..ExactOptions::default()
+    };
+    let stop = AtomicBool::new(false);
+    let upper = AtomicUsize::new(usize::MAX);
+    let seen = Encodings(std::sync::Mutex::new(Vec::new()));
+    let outcome = search(&figs, &options, &stop, &upper, &seen).expect("search runs");
+    let found = outcome.found.clone().expect("two halves");
+    let count = dissect_core::verify::verify_pieces(LatticeKind::Square, true, &figs, &found)
+        .expect("a valid dissection");
+    assert_eq!(count, 2);
+    assert!(outcome.optimal(), "{:?}", outcome.lower_bound);
+    let seen = seen.0.lock().expect("lock");
+    assert!(!seen.is_empty());
+    for (k, size) in seen.iter() {
+        let bytes = size.bytes(false);
+        assert!(bytes < 256 << 20, "k={k}: {size:?}, {bytes} bytes");
+    }
+}
