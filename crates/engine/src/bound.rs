@@ -109,6 +109,7 @@ pub fn bound(
         max_pieces: config.max_pieces,
         certify: config.certify,
         max_encoding_bytes: BOUND_MAX_BYTES,
+        sat_max_cells: dissect_exact::bound::SAT_MAX_CELLS,
         ..ExactOptions::default()
     };
     let cap = options.max_encoding_bytes;

@@ -74,6 +74,14 @@ pub struct ExactOptions {
     /// encoding unless the shift chain is much smaller; always direct
     /// under constraints).
     pub motion_encoding: MotionEncoding,
+    /// Figures of more cells get no SAT model, only the cheap bounds
+    /// ([`Limit::Cells`]); at most [`SAT_MAX_CELLS`](crate::bound::SAT_MAX_CELLS)
+    /// is used. The default is
+    /// [`FULL_GRAPH_MAX_CELLS`](crate::bound::FULL_GRAPH_MAX_CELLS), the
+    /// largest figures with incompatibility graphs (the engine's solve
+    /// keeps it, beside its heuristic); `dissect bound` asks for
+    /// `SAT_MAX_CELLS`.
+    pub sat_max_cells: usize,
 }
 
 /// The default of [`ExactOptions::max_encoding_bytes`]: 512 MiB.
@@ -85,8 +93,8 @@ pub const DEFAULT_MAX_ENCODING_BYTES: u64 = 512 << 20;
 pub enum Limit {
     /// [`ExactOptions::conflict_budget`] was spent.
     ConflictBudget,
-    /// A figure has more than [`SAT_MAX_CELLS`](crate::bound::SAT_MAX_CELLS)
-    /// cells: no SAT model is built, only the cheap bounds hold.
+    /// A figure has more than [`ExactOptions::sat_max_cells`] cells: no SAT
+    /// model is built, only the cheap bounds hold.
     Cells {
         /// The cells of the largest figure.
         cells: usize,
@@ -117,6 +125,7 @@ impl Default for ExactOptions {
             constraints: None,
             certify: false,
             motion_encoding: MotionEncoding::Auto,
+            sat_max_cells: crate::bound::FULL_GRAPH_MAX_CELLS,
         }
     }
 }
@@ -482,10 +491,15 @@ pub fn search(
         limit: None,
         conflicts: 0,
     };
+    let cells = figures.iter().map(Figure::len).max().unwrap_or(0);
+    let sat_max = options.sat_max_cells.min(crate::bound::SAT_MAX_CELLS);
+    if cells > sat_max && !interrupted() {
+        outcome.limit = Some(Limit::Cells { cells });
+        return Ok(outcome);
+    }
     let Some((mut inst, clique, incompat)) = model_inputs(figures, options.mirror, &mut cheap)
     else {
-        let cells = figures.iter().map(Figure::len).max().unwrap_or(0);
-        if cells > crate::bound::SAT_MAX_CELLS && !interrupted() {
+        if cells > sat_max && !interrupted() {
             outcome.limit = Some(Limit::Cells { cells });
         } else {
             outcome.stopped = true;

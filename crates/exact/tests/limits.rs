@@ -244,10 +244,19 @@ fn figures_over_the_full_graph_size_get_a_sat_model_by_shifts() {
     assert!(figs[0].len() > dissect_exact::bound::FULL_GRAPH_MAX_CELLS);
     let options = ExactOptions {
         mode: Mode::Minimum,
+        sat_max_cells: dissect_exact::bound::SAT_MAX_CELLS,
         ..ExactOptions::default()
     };
     let stop = AtomicBool::new(false);
     let upper = AtomicUsize::new(usize::MAX);
+    let default = search(&figs, &ExactOptions::default(), &stop, &upper, &()).expect("runs");
+    assert!(
+        matches!(
+            default.limit,
+            Some(dissect_exact::Limit::Cells { cells: 676 })
+        ),
+        "by default figures over the full graph's size get no SAT model: {default:?}"
+    );
     let seen = Encodings(std::sync::Mutex::new(Vec::new()));
     let outcome = search(&figs, &options, &stop, &upper, &seen).expect("search runs");
     let found = outcome.found.clone().expect("two halves");
