@@ -264,7 +264,7 @@ impl Run<'_> {
         else {
             return Ok(());
         };
-        let size = estimate(&inst, k, DIRECT, &clique, &incompat);
+        let size = estimate(&inst, k, DIRECT, &clique, &incompat, &|| false);
         let bytes = size.bytes(false);
         if bytes > self.options.max_encoding_bytes {
             self.out.limit = Some(Limit::TooLarge { pieces: k, bytes });

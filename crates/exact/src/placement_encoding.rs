@@ -138,15 +138,20 @@ pub(crate) fn estimate(
     (set, style): (MotionSet, MotionEncoding),
     clique_cells: &[usize],
     incompat: &[Incompatibility],
+    interrupted: &dyn Fn() -> bool,
 ) -> EncodingSize {
     let clique = clique_cells.len();
     if style == MotionEncoding::Auto {
         return estimate(
             inst,
             k,
-            (set, choose(inst, k, set, clique_cells, incompat)),
+            (
+                set,
+                choose(inst, k, set, clique_cells, incompat, interrupted),
+            ),
             clique_cells,
             incompat,
+            interrupted,
         );
     }
     let anchored = clique.max(1).min(k) as u64;
@@ -171,7 +176,9 @@ pub(crate) fn estimate(
             .collect();
         let q = clique.min(k);
         let anchors = if q > 0 { &clique_cells[..q] } else { &[0][..] };
-        let (v, c) = crate::shift_encoding::shifts_size(inst, k, &admitted, anchors);
+        // Interrupted: as large as can be (the caller asks the flag).
+        let (v, c) = crate::shift_encoding::shifts_size(inst, k, &admitted, anchors, interrupted)
+            .unwrap_or((u64::MAX, u64::MAX));
         return EncodingSize {
             vars: vars.saturating_add(v).min(usize::MAX as u64) as usize,
             clauses: clauses.saturating_add(c).min(usize::MAX as u64) as usize,
@@ -206,12 +213,29 @@ pub(crate) fn choose(
     set: MotionSet,
     clique: &[usize],
     incompat: &[Incompatibility],
+    interrupted: &dyn Fn() -> bool,
 ) -> MotionEncoding {
-    let direct = estimate(inst, k, (set, MotionEncoding::Direct), clique, incompat).bytes(false);
+    let direct = estimate(
+        inst,
+        k,
+        (set, MotionEncoding::Direct),
+        clique,
+        incompat,
+        interrupted,
+    )
+    .bytes(false);
     if direct <= DIRECT_ALWAYS_BYTES {
         return MotionEncoding::Direct;
     }
-    let shifts = estimate(inst, k, (set, MotionEncoding::Shifts), clique, incompat).bytes(false);
+    let shifts = estimate(
+        inst,
+        k,
+        (set, MotionEncoding::Shifts),
+        clique,
+        incompat,
+        interrupted,
+    )
+    .bytes(false);
     if direct <= shifts.saturating_mul(2) {
         MotionEncoding::Direct
     } else {
@@ -235,7 +259,7 @@ pub(crate) fn encode(
     interrupted: &dyn Fn() -> bool,
 ) -> Option<Encoding> {
     let style = match style {
-        MotionEncoding::Auto => choose(inst, k, set, clique, incompat),
+        MotionEncoding::Auto => choose(inst, k, set, clique, incompat, interrupted),
         s => s,
     };
     let cell: Vec<Vec<Vec<i32>>> = inst

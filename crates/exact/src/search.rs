@@ -341,12 +341,29 @@ impl Context<'_> {
         let start = Instant::now();
         let interrupted =
             || self.stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
-        let style = if self.constraints.is_some() {
-            MotionEncoding::Direct
-        } else {
-            self.motion_encoding
+        let style = match self.motion_encoding {
+            _ if self.constraints.is_some() => MotionEncoding::Direct,
+            MotionEncoding::Auto => crate::placement_encoding::choose(
+                self.inst,
+                k,
+                set,
+                self.clique,
+                self.incompat,
+                &interrupted,
+            ),
+            s => s,
         };
-        let estimate = estimate(self.inst, k, (set, style), self.clique, self.incompat);
+        let estimate = estimate(
+            self.inst,
+            k,
+            (set, style),
+            self.clique,
+            self.incompat,
+            &interrupted,
+        );
+        if interrupted() {
+            return Pass::Unknown;
+        }
         let bytes = estimate.bytes(self.certify);
         if bytes > self.max_bytes {
             self.observer.on_event(&ExactEvent::TooLarge {
@@ -711,7 +728,7 @@ pub fn dimacs_within(
     let (inst, clique, incompat) =
         model_inputs(figures, mirror, &mut cheap).expect("not interrupted");
     let all = (MotionSet::All, MotionEncoding::Auto);
-    if let Some(e) = too_large(estimate(&inst, k, all, &clique, &incompat)) {
+    if let Some(e) = too_large(estimate(&inst, k, all, &clique, &incompat, &|| false)) {
         return Err(e);
     }
     let stop = AtomicBool::new(false);
@@ -791,7 +808,7 @@ mod tests {
         let (inst, clique, incompat) = model_inputs(&figs, true, &mut cheap).expect("graphs");
         let stop = AtomicBool::new(false);
         for k in 1..=5 {
-            let est = estimate(&inst, k, DIRECT, &clique, &incompat);
+            let est = estimate(&inst, k, DIRECT, &clique, &incompat, &|| false);
             let mut sat = Sat::new(&stop, None);
             encode(&inst, &mut sat, k, DIRECT, &clique, &incompat, &|| false)
                 .expect("not interrupted");
@@ -844,7 +861,7 @@ mod tests {
             let mut cheap = cheap(figs, true, &|| false).expect("valid figures");
             let (inst, clique, incompat) = model_inputs(figs, true, &mut cheap).expect("graphs");
             for k in 1..=4 {
-                let est = estimate(&inst, k, shifts, &clique, &incompat);
+                let est = estimate(&inst, k, shifts, &clique, &incompat, &|| false);
                 let mut sat = Sat::new(&stop, None);
                 let enc = encode(&inst, &mut sat, k, shifts, &clique, &incompat, &|| false)
                     .expect("not interrupted");

@@ -160,18 +160,23 @@ fn chain_size(
 
 /// An upper estimate of the variables and clauses of [`motions_by_shifts`]
 /// for every shape `f ≥ 1` and the symmetries `syms`, for `k` pieces of
-/// which the first ones are anchored at `anchors` (cells of shape 0).
+/// which the first ones are anchored at `anchors` (cells of shape 0);
+/// `None` when `interrupted` says so (asked for every symmetry).
 pub(crate) fn shifts_size(
     inst: &Instance,
     k: usize,
     syms: &[usize],
     anchors: &[usize],
-) -> (u64, u64) {
+    interrupted: &dyn Fn() -> bool,
+) -> Option<(u64, u64)> {
     let (mut vars, mut clauses) = (0u64, 0u64);
     let anchored = anchors.len().min(k);
     for to in 1..inst.shapes.len() {
         let keys = level_keys(inst, to);
         for &g in syms {
+            if interrupted() {
+                return None;
+            }
             let (v, c) = chain_size(inst, (to, g), None, &keys);
             let free = (k - anchored) as u64;
             vars = vars.saturating_add(v.saturating_mul(free));
@@ -184,7 +189,7 @@ pub(crate) fn shifts_size(
         }
         clauses = clauses.saturating_add(k as u64);
     }
-    (vars, clauses)
+    Some((vars, clauses))
 }
 
 /// Encodes the motions of piece `i` into shape `to` as a shift chain per

@@ -271,3 +271,28 @@ fn figures_over_the_full_graph_size_get_a_sat_model_by_shifts() {
         assert!(bytes < 256 << 20, "k={k}: {size:?}, {bytes} bytes");
     }
 }
+
+#[test]
+fn a_deadline_stops_the_shift_estimate_and_encoding_of_large_figures() {
+    // 1,800 cells each, SAT models allowed up to 2,000 cells: the shift
+    // chain's estimate and encoding take seconds; deadlines inside them end
+    // the search within a second or so.
+    let figs = square(&[rect(60, 30), rect(45, 40)]);
+    for ms in [200, 1000, 2500] {
+        let stop = AtomicBool::new(false);
+        let start = Instant::now();
+        let options = ExactOptions {
+            deadline: Some(start + Duration::from_millis(ms)),
+            sat_max_cells: dissect_exact::bound::SAT_MAX_CELLS,
+            max_encoding_bytes: 4 << 30,
+            ..ExactOptions::default()
+        };
+        let outcome = run(&figs, &options, &stop);
+        let took = start.elapsed();
+        assert!(
+            took < Duration::from_millis(ms + 1200),
+            "deadline {ms} ms, took {took:?}"
+        );
+        assert!(outcome.stopped || outcome.found.is_some(), "{outcome:?}");
+    }
+}
