@@ -182,7 +182,7 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
     } else if let Some(cells) = report.too_many_cells {
         println!(
             "no SAT search: a figure has {cells} cells (over {}); the bound below is the cheap one",
-            dissect_exact::bound::FULL_GRAPH_MAX_CELLS
+            dissect_exact::bound::SAT_MAX_CELLS
         );
     } else if report.stopped() {
         println!("stopped (time limit or Ctrl-C); the bound below is the best proved");

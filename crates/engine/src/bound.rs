@@ -22,6 +22,12 @@ use crate::report::{End, LowerBound};
 use crate::run::{proof, EngineError, EngineEvent, EngineObserver, Forward};
 use crate::verified::Verified;
 
+/// The largest SAT encoding a bound builds (estimated bytes; the search's
+/// default is 512 MiB): 1.5 GiB, so that a bound with its encoding, the
+/// solver's learnt clauses and the rest of the process stays under 2 GiB
+/// (the shift chain keeps 3D pairs of 1,000 voxels well inside it).
+const BOUND_MAX_BYTES: u64 = 1536 << 20;
+
 /// How long a stopped bound waits for the search to return.
 const BOUND_GRACE: Duration = Duration::from_millis(300);
 
@@ -65,7 +71,7 @@ pub struct BoundReport {
     /// piece count and estimated bytes, and the cap.
     pub too_large: Option<(usize, u64, u64)>,
     /// The cells of the largest figure when it is over the exact search's
-    /// size (`dissect_exact::bound::FULL_GRAPH_MAX_CELLS`): no SAT search
+    /// size (`dissect_exact::bound::SAT_MAX_CELLS`): no SAT search
     /// ran, the bound is the cheap one.
     pub too_many_cells: Option<usize>,
     /// Seconds from the start.
@@ -102,6 +108,8 @@ pub fn bound(
         deadline,
         max_pieces: config.max_pieces,
         certify: config.certify,
+        max_encoding_bytes: BOUND_MAX_BYTES,
+        sat_max_cells: dissect_exact::bound::SAT_MAX_CELLS,
         ..ExactOptions::default()
     };
     let cap = options.max_encoding_bytes;

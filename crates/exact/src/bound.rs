@@ -117,6 +117,12 @@ pub(crate) struct Cheap {
 /// incompatibility graph, whose cost grows with the square of the cells.
 pub const FULL_GRAPH_MAX_CELLS: usize = 600;
 
+/// Figures of more cells get no SAT model (only the cheap bounds); up to
+/// this size, figures over [`FULL_GRAPH_MAX_CELLS`] get one without
+/// incompatibility clauses (their graphs are not built), the clique of
+/// extreme cells fixing the first pieces.
+pub const SAT_MAX_CELLS: usize = 2_000;
+
 /// Branch-and-bound nodes spent on one figure's clique.
 const CLIQUE_NODES: usize = 200_000;
 
@@ -188,6 +194,14 @@ pub(crate) fn cheap_with(
         if let Some(gs) = &mut graphs {
             gs.push(g);
         }
+    }
+    if large && !interrupted() && inst.shapes.iter().all(|s| s.len() <= SAT_MAX_CELLS) {
+        graphs = Some(
+            inst.shapes
+                .iter()
+                .map(|s| Incompatibility::none(s.len()))
+                .collect(),
+        );
     }
     if clique.len() > bound.value {
         let cells = &inst.shapes[inst

@@ -47,7 +47,11 @@ use dissect_core::{Cell, Figure};
 use crate::bound::{cheap, Bound, Reason};
 use crate::connectivity_cut::cuts;
 use crate::motion::MotionSet;
-use crate::placement_encoding::{encode, estimate, Encoding, EncodingSize};
+use crate::placement_encoding::{encode, estimate, Encoding, EncodingSize, MotionEncoding};
+
+/// Enumeration keeps one variable per motion (its symmetry breaking and
+/// constraints speak of them).
+const DIRECT: (MotionSet, MotionEncoding) = (MotionSet::All, MotionEncoding::Direct);
 use crate::reachability_encoding::{add_connectivity, connectivity_size};
 use crate::sat_backend::Sat;
 use crate::search::{model_inputs_from, ExactEvent, Limit, DEFAULT_MAX_ENCODING_BYTES};
@@ -260,7 +264,7 @@ impl Run<'_> {
         else {
             return Ok(());
         };
-        let size = estimate(&inst, k, MotionSet::All, clique.len(), &incompat);
+        let size = estimate(&inst, k, DIRECT, &clique, &incompat, &|| false);
         let bytes = size.bytes(false);
         if bytes > self.options.max_encoding_bytes {
             self.out.limit = Some(Limit::TooLarge { pieces: k, bytes });
@@ -276,15 +280,7 @@ impl Run<'_> {
         .bytes(false);
         let eager = bytes.saturating_add(connectivity_bytes) <= self.options.max_encoding_bytes;
         let mut sat = Sat::new(self.stop, None);
-        let Some(enc) = encode(
-            &inst,
-            &mut sat,
-            k,
-            MotionSet::All,
-            &clique,
-            &incompat,
-            &interrupted,
-        ) else {
+        let Some(enc) = encode(&inst, &mut sat, k, DIRECT, &clique, &incompat, &interrupted) else {
             return Ok(());
         };
         // Exactly k pieces: the last one is not empty (the order by first

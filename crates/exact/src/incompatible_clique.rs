@@ -139,6 +139,16 @@ impl Incompatibility {
         Incompatibility { n, rows }
     }
 
+    /// The graph on `n` cells with no pair known apart (for figures too
+    /// large for the full graph: the encoding then has no incompatibility
+    /// clauses, a weaker relaxation, still sound).
+    pub fn none(n: usize) -> Incompatibility {
+        Incompatibility {
+            n,
+            rows: Vec::new(),
+        }
+    }
+
     /// The number of ordered pairs of incompatible cells.
     pub fn edges(&self) -> u64 {
         self.rows
@@ -150,7 +160,9 @@ impl Incompatibility {
 
     /// Whether cells `a` and `b` can never share a piece.
     pub fn apart(&self, a: usize, b: usize) -> bool {
-        self.rows[a][b / 64] >> (b % 64) & 1 == 1
+        self.rows
+            .get(a)
+            .is_some_and(|r| r[b / 64] >> (b % 64) & 1 == 1)
     }
 
     /// A large clique (cell indices), found by branch and bound with greedy
@@ -158,6 +170,10 @@ impl Incompatibility {
     /// clique seen, which is still a valid bound. `interrupted` is asked
     /// every 64 nodes and ends the search the same way.
     pub fn clique(&self, node_limit: usize, interrupted: &dyn Fn() -> bool) -> Vec<usize> {
+        if self.rows.is_empty() {
+            // No pair known apart: any one cell.
+            return if self.n > 0 { vec![0] } else { Vec::new() };
+        }
         // Relabel by degree, largest first: colouring bounds get tighter.
         let deg: Vec<usize> = self
             .rows

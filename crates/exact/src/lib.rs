@@ -45,12 +45,13 @@ pub(crate) mod reachability_encoding;
 pub mod repair;
 pub(crate) mod sat_backend;
 pub mod search;
+pub(crate) mod shift_encoding;
 
 pub use bound::{cheap_bound, Bound, Reason};
 pub use certificate::Certificate;
 pub use enumerate::{enumerate, EnumerateEvent, EnumerateObserver, EnumerateOptions, Enumeration};
 pub use motion::MotionSet;
-pub use placement_encoding::EncodingSize;
+pub use placement_encoding::{EncodingSize, MotionEncoding};
 pub use repair::{repair, repair_report, RepairOptions, RepairReport};
 pub use search::{
     dimacs, dimacs_within, search, Dimacs, ExactEvent, ExactObserver, ExactOptions, ExactOutcome,

@@ -41,7 +41,29 @@ pub(crate) struct Encoding {
     /// `anchors[i]`: a cell of shape 0 fixed to piece `i`, when there is one.
     pub anchors: Vec<usize>,
     pub cell: Vec<Vec<Vec<i32>>>,
+    /// The direct encoding's motion variables (empty per piece with
+    /// [`MotionEncoding::Shifts`]).
     pub motion: Vec<Vec<Vec<(i32, Motion)>>>,
+    /// The shift variables of [`MotionEncoding::Shifts`].
+    pub shift_vars: usize,
+}
+
+/// How the motion of each piece into each other figure is encoded.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MotionEncoding {
+    /// [`MotionEncoding::Direct`] while its estimate is small or not much
+    /// larger than the shift chain's, else [`MotionEncoding::Shifts`];
+    /// always `Direct` under constraints (they are stated on motion
+    /// variables).
+    #[default]
+    Auto,
+    /// One variable per motion (symmetry and translation), tied to every
+    /// cell: the strongest propagation, about `cells²` clauses per piece.
+    Direct,
+    /// A symmetry and one shift per axis, the piece moved one axis at a
+    /// time through level variables: about `cells × width` clauses per
+    /// piece and symmetry.
+    Shifts,
 }
 
 /// Counts of what was encoded.
@@ -113,10 +135,25 @@ fn motion_count(inst: &Instance, to: usize, set: MotionSet) -> usize {
 pub(crate) fn estimate(
     inst: &Instance,
     k: usize,
-    set: MotionSet,
-    clique: usize,
+    (set, style): (MotionSet, MotionEncoding),
+    clique_cells: &[usize],
     incompat: &[Incompatibility],
+    interrupted: &dyn Fn() -> bool,
 ) -> EncodingSize {
+    let clique = clique_cells.len();
+    if style == MotionEncoding::Auto {
+        return estimate(
+            inst,
+            k,
+            (
+                set,
+                choose(inst, k, set, clique_cells, incompat, interrupted),
+            ),
+            clique_cells,
+            incompat,
+            interrupted,
+        );
+    }
     let anchored = clique.max(1).min(k) as u64;
     let syms = (0..inst.syms.len())
         .filter(|&g| set.admits(g, inst.syms[g].determinant()))
@@ -133,6 +170,21 @@ pub(crate) fn estimate(
     let pairs: u64 = incompat.iter().map(|g| g.edges() / 2).sum();
     clauses = clauses.saturating_add(pairs.saturating_mul(k64));
     let mut motions = 0u64;
+    if style == MotionEncoding::Shifts {
+        let admitted: Vec<usize> = (0..inst.syms.len())
+            .filter(|&g| set.admits(g, inst.syms[g].determinant()))
+            .collect();
+        let q = clique.min(k);
+        let anchors = if q > 0 { &clique_cells[..q] } else { &[0][..] };
+        // Interrupted: as large as can be (the caller asks the flag).
+        let (v, c) = crate::shift_encoding::shifts_size(inst, k, &admitted, anchors, interrupted)
+            .unwrap_or((u64::MAX, u64::MAX));
+        return EncodingSize {
+            vars: vars.saturating_add(v).min(usize::MAX as u64) as usize,
+            clauses: clauses.saturating_add(c).min(usize::MAX as u64) as usize,
+            motions: v.min(usize::MAX as u64) as usize,
+        };
+    }
     for f in 1..figures {
         let all = motion_count(inst, f, set) as u64;
         let one_anchored = all.min(syms * inst.shapes[f].len() as u64);
@@ -149,6 +201,48 @@ pub(crate) fn estimate(
     }
 }
 
+/// Direct encodings estimated at most this many bytes are always taken.
+const DIRECT_ALWAYS_BYTES: u64 = 64 << 20;
+
+/// The motion encoding [`MotionEncoding::Auto`] stands for: the direct one
+/// when it is estimated at most [`DIRECT_ALWAYS_BYTES`] or at most twice
+/// the shift chain's size, else the shift chain.
+pub(crate) fn choose(
+    inst: &Instance,
+    k: usize,
+    set: MotionSet,
+    clique: &[usize],
+    incompat: &[Incompatibility],
+    interrupted: &dyn Fn() -> bool,
+) -> MotionEncoding {
+    let direct = estimate(
+        inst,
+        k,
+        (set, MotionEncoding::Direct),
+        clique,
+        incompat,
+        interrupted,
+    )
+    .bytes(false);
+    if direct <= DIRECT_ALWAYS_BYTES {
+        return MotionEncoding::Direct;
+    }
+    let shifts = estimate(
+        inst,
+        k,
+        (set, MotionEncoding::Shifts),
+        clique,
+        incompat,
+        interrupted,
+    )
+    .bytes(false);
+    if direct <= shifts.saturating_mul(2) {
+        MotionEncoding::Direct
+    } else {
+        MotionEncoding::Shifts
+    }
+}
+
 /// Encodes "at most `k` pieces" with motions from `set` into `sat`.
 ///
 /// `clique` lists cells of shape 0 that are pairwise incompatible (at most
@@ -159,11 +253,15 @@ pub(crate) fn encode(
     inst: &Instance,
     sat: &mut Sat<'_>,
     k: usize,
-    set: MotionSet,
+    (set, style): (MotionSet, MotionEncoding),
     clique: &[usize],
     incompat: &[Incompatibility],
     interrupted: &dyn Fn() -> bool,
 ) -> Option<Encoding> {
+    let style = match style {
+        MotionEncoding::Auto => choose(inst, k, set, clique, incompat, interrupted),
+        s => s,
+    };
     let cell: Vec<Vec<Vec<i32>>> = inst
         .shapes
         .iter()
@@ -178,7 +276,13 @@ pub(crate) fn encode(
     no_cell_cut_off(inst, sat, &cell, k, interrupted)?;
     incompatible_apart(inst, sat, &cell, incompat, interrupted)?;
     let mut motion: Vec<Vec<Vec<(i32, Motion)>>> = vec![Vec::new()];
+    let mut shift_vars = 0;
     for f in 1..inst.shapes.len() {
+        if style == MotionEncoding::Shifts {
+            shift_vars += shifts_of_shape(inst, sat, &cell, (f, set), &anchor, interrupted)?;
+            motion.push(vec![Vec::new(); k]);
+            continue;
+        }
         motion.push(motions_of_shape(
             inst,
             sat,
@@ -194,6 +298,7 @@ pub(crate) fn encode(
         anchors: anchor,
         cell,
         motion,
+        shift_vars,
     })
 }
 
@@ -312,6 +417,9 @@ fn incompatible_apart(
 ) -> Option<()> {
     let shapes = &inst.shapes;
     for (f, g) in incompat.iter().enumerate() {
+        if g.edges() == 0 {
+            continue;
+        }
         for a in 0..shapes[f].len() {
             if a.is_multiple_of(64) && interrupted() {
                 return None;
@@ -328,6 +436,53 @@ fn incompatible_apart(
     Some(())
 }
 
+/// The symmetries piece `i` may take into shape `f`: those of `set`, and
+/// for the first piece only one per coset of shape `f`'s symmetries (see
+/// [`motions_of_shape`]).
+fn piece_symmetries(inst: &Instance, f: usize, set: MotionSet) -> (Vec<usize>, Vec<bool>) {
+    let group: Vec<usize> = self_symmetries(inst, f)
+        .into_iter()
+        .filter(|&h| set.admits(h, inst.syms[h].determinant()))
+        .filter(|&h| inst.target_symmetries || h == 0)
+        .collect();
+    let reps = coset_representatives(inst, &group);
+    let admitted = (0..inst.syms.len())
+        .filter(|&g| set.admits(g, inst.syms[g].determinant()))
+        .collect();
+    (admitted, reps)
+}
+
+/// [`motions_of_shape`] as shift chains ([`MotionEncoding::Shifts`]):
+/// the same symmetries per piece, the anchored pieces' shifts limited by
+/// their anchor. Returns the shift variables; `None` when interrupted.
+fn shifts_of_shape(
+    inst: &Instance,
+    sat: &mut Sat<'_>,
+    cell: &[Vec<Vec<i32>>],
+    (f, set): (usize, MotionSet),
+    anchor: &[usize],
+    interrupted: &dyn Fn() -> bool,
+) -> Option<usize> {
+    let (admitted, reps) = piece_symmetries(inst, f, set);
+    let mut count = 0;
+    for (i, (from, into)) in cell[0].iter().zip(&cell[f]).enumerate() {
+        let syms: Vec<usize> = admitted
+            .iter()
+            .copied()
+            .filter(|&g| i != 0 || reps[g])
+            .collect();
+        count += crate::shift_encoding::motions_by_shifts(
+            inst,
+            sat,
+            (f, &syms),
+            (from, into),
+            anchor.get(i).copied(),
+            interrupted,
+        )?;
+    }
+    Some(count)
+}
+
 /// The motion variables of each piece into shape `f` (from `set`) and
 /// the clauses that tie a piece's cells in shape 0 to its cells in shape
 /// `f`. `None` when interrupted.
@@ -341,12 +496,7 @@ fn motions_of_shape(
 ) -> Option<Vec<Vec<(i32, Motion)>>> {
     let shapes = &inst.shapes;
     let all = motions_into(inst, f, set, interrupted)?;
-    let group: Vec<usize> = self_symmetries(inst, f)
-        .into_iter()
-        .filter(|&h| set.admits(h, inst.syms[h].determinant()))
-        .filter(|&h| inst.target_symmetries || h == 0)
-        .collect();
-    let reps = coset_representatives(inst, &group);
+    let (_, reps) = piece_symmetries(inst, f, set);
     let target = &shapes[f];
     let mut per_piece = Vec::with_capacity(cell[0].len());
     for (i, (from, into)) in cell[0].iter().zip(&cell[f]).enumerate() {
@@ -416,8 +566,9 @@ impl Encoding {
         pieces
     }
 
-    /// The number of motion variables.
+    /// The number of motion variables (shift variables with
+    /// [`MotionEncoding::Shifts`]).
     pub fn motions(&self) -> usize {
-        self.motion.iter().flatten().map(|v| v.len()).sum()
+        self.motion.iter().flatten().map(|v| v.len()).sum::<usize>() + self.shift_vars
     }
 }

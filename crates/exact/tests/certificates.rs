@@ -8,7 +8,9 @@ use std::sync::Mutex;
 
 use dissect_core::io::parse_figure;
 use dissect_core::{Figure, LatticeKind};
-use dissect_exact::{search, Certificate, ExactEvent, ExactObserver, ExactOptions, Mode, Reason};
+use dissect_exact::{
+    search, Certificate, ExactEvent, ExactObserver, ExactOptions, Mode, MotionEncoding, Reason,
+};
 
 struct Collect(Mutex<Vec<Certificate>>, Mutex<Vec<usize>>);
 
@@ -51,6 +53,20 @@ fn certified_with(
     eager: bool,
     max_encoding_bytes: u64,
 ) -> Vec<Certificate> {
+    certified_encoded(
+        figs,
+        (mirror, minimum, eager),
+        max_encoding_bytes,
+        MotionEncoding::Auto,
+    )
+}
+
+fn certified_encoded(
+    figs: &[Figure],
+    (mirror, minimum, eager): (bool, usize, bool),
+    max_encoding_bytes: u64,
+    motion_encoding: MotionEncoding,
+) -> Vec<Certificate> {
     let options = ExactOptions {
         mirror,
         mode: Mode::LowerBound,
@@ -58,6 +74,7 @@ fn certified_with(
         eager_connectivity: eager,
         certify: true,
         max_encoding_bytes,
+        motion_encoding,
         ..ExactOptions::default()
     };
     let collect = Collect(Mutex::new(Vec::new()), Mutex::new(Vec::new()));
@@ -151,4 +168,58 @@ fn a_clique_bound_too_large_to_encode_is_certified_by_its_clique() {
     assert_eq!(certs[0].vars, 4 * 3);
     let full = certified(&figs, true, 4, true);
     assert!(full.iter().all(|c| !c.clique_only && c.vars > 12));
+}
+
+/// The formula `text` without its clause number `drop` (0-based, the header
+/// count lowered).
+fn without_clause(text: &str, drop: usize) -> String {
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().expect("header").split_whitespace().collect();
+    let clauses: usize = header[3].parse().expect("count");
+    let mut out = format!("p cnf {} {}\n", header[2], clauses - 1);
+    for (i, line) in lines.enumerate() {
+        if i != drop {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// With the shift chain ([`MotionEncoding::Shifts`]) every refutation is
+/// certified and checked as with the direct encoding (the chain's clauses
+/// and the connectivity added after a model are in the formula written),
+/// and the proof depends on them: some clause removed makes the checker
+/// fail.
+#[test]
+fn shift_chain_refutations_are_certified_and_need_their_clauses() {
+    let s = LatticeKind::Square;
+    let shifts = MotionEncoding::Shifts;
+    let cap = ExactOptions::default().max_encoding_bytes;
+    for (texts, minimum) in [
+        (&["#.#\n###", "#####"][..], 3),
+        (&["##..\n.##.\n..##", "###\n###"][..], 2),
+    ] {
+        for eager in [true, false] {
+            let certs = certified_encoded(&figures(s, texts), (true, minimum, eager), cap, shifts);
+            assert!(certs.iter().any(|c| c.pieces == minimum - 1), "{texts:?}");
+        }
+    }
+    let figs = figures(
+        LatticeKind::Square,
+        &[
+            "###############\n###############\n###############\n####...########\n####...########\n\
+             ###############\n###############\n###############\n###############\n###############",
+            &"############\n".repeat(12),
+        ],
+    );
+    let certs = certified_encoded(&figs, (true, 3, true), cap, shifts);
+    let k2 = certs.iter().find(|c| c.pieces == 2).expect("k2 certified");
+    let proof = dissect_proof::Proof::parse(&k2.proof).expect("the proof parses");
+    let step = (k2.clauses / 300).max(1);
+    let failed = (0..k2.clauses).step_by(step).any(|drop| {
+        let cnf = dissect_proof::Cnf::parse(&without_clause(&k2.formula, drop)).expect("parses");
+        dissect_proof::check(&cnf, &proof).is_err()
+    });
+    assert!(failed, "no clause of {} was needed", k2.clauses);
 }

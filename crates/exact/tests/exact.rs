@@ -12,7 +12,9 @@ use dissect_core::io::parse_figure;
 use dissect_core::lattice::Point;
 use dissect_core::Dissection;
 use dissect_core::{Cell, Figure, LatticeKind};
-use dissect_exact::{cheap_bound, search, ExactOptions, ExactOutcome, Mode, Reason};
+use dissect_exact::{
+    cheap_bound, search, ExactOptions, ExactOutcome, Mode, MotionEncoding, Reason,
+};
 
 fn figures(lattice: LatticeKind, texts: &[&str]) -> Vec<Figure> {
     texts
@@ -32,11 +34,28 @@ fn run_with(
     max_pieces: Option<usize>,
     eager_connectivity: bool,
 ) -> ExactOutcome {
+    run_encoded(
+        figs,
+        mirror,
+        (mode, max_pieces),
+        eager_connectivity,
+        MotionEncoding::Auto,
+    )
+}
+
+fn run_encoded(
+    figs: &[Figure],
+    mirror: bool,
+    (mode, max_pieces): (Mode, Option<usize>),
+    eager_connectivity: bool,
+    motion_encoding: MotionEncoding,
+) -> ExactOutcome {
     let options = ExactOptions {
         mirror,
         mode,
         max_pieces,
         eager_connectivity,
+        motion_encoding,
         ..ExactOptions::default()
     };
     let stop = AtomicBool::new(false);
@@ -182,6 +201,16 @@ fn check(lattice: LatticeKind, mirror: bool, texts: &[&str]) -> usize {
 }
 
 fn check_with(lattice: LatticeKind, mirror: bool, texts: &[&str], eager: bool) -> usize {
+    check_encoded(lattice, mirror, texts, eager, MotionEncoding::Auto)
+}
+
+fn check_encoded(
+    lattice: LatticeKind,
+    mirror: bool,
+    texts: &[&str],
+    eager: bool,
+    style: MotionEncoding,
+) -> usize {
     let figs = figures(lattice, texts);
     let (brute, partition) = Brute::new(lattice, mirror).minimum(&figs);
     assert!(
@@ -195,7 +224,7 @@ fn check_with(lattice: LatticeKind, mirror: bool, texts: &[&str], eager: bool) -
         "cheap bound {cheap} exceeds the minimum {brute}"
     );
 
-    let exact = run_with(&figs, mirror, Mode::Minimum, None, eager);
+    let exact = run_encoded(&figs, mirror, (Mode::Minimum, None), eager, style);
     let found = exact
         .found
         .clone()
@@ -207,7 +236,13 @@ fn check_with(lattice: LatticeKind, mirror: bool, texts: &[&str], eager: bool) -
     assert_eq!(exact.lower_bound.value, brute);
 
     if brute > 1 {
-        let bound = run_with(&figs, mirror, Mode::LowerBound, Some(brute - 1), eager);
+        let bound = run_encoded(
+            &figs,
+            mirror,
+            (Mode::LowerBound, Some(brute - 1)),
+            eager,
+            style,
+        );
         assert_eq!(
             bound.lower_bound.value, brute,
             "the bound proved below the minimum is the minimum for {texts:?}"
@@ -247,6 +282,54 @@ fn lazy_connectivity_cuts_match_brute_force() {
         false,
         &["###\n#..\n\n##.\n...", "###\n###"],
         false,
+    );
+}
+
+/// The shift chain (a symmetry and one shift per axis, moved through level
+/// variables) proves and finds exactly what brute force says, on square,
+/// tri4 (translations of modulus 2) and cubic figures, with two and three
+/// figures, mirror images on and off, eager and lazy connectivity.
+#[test]
+fn shift_encoding_matches_brute_force() {
+    let shifts = MotionEncoding::Shifts;
+    let s = LatticeKind::Square;
+    let square: [(&[&str], usize); 6] = [
+        (&["###\n#..", "##\n##"], 2),
+        (&["#.#\n###", "#####"], 3),
+        (&["###\n###", "######"], 2),
+        (&["##..\n.##.\n..##", "###\n###"], 2),
+        (&["###\n#.#\n###", "####\n####"], 2),
+        (&["####", "##\n##", "#..\n###"], 2),
+    ];
+    for (texts, want) in square {
+        for eager in [true, false] {
+            assert_eq!(
+                check_encoded(s, true, texts, eager, shifts),
+                want,
+                "{texts:?}"
+            );
+        }
+    }
+    assert_eq!(
+        check_encoded(s, true, &["##.\n.##", ".##\n##."], true, shifts),
+        1
+    );
+    assert_eq!(
+        check_encoded(s, false, &["##.\n.##", ".##\n##."], true, shifts),
+        2
+    );
+    let t = LatticeKind::Tri4;
+    check_encoded(t, true, &["FF", "6C\n39"], true, shifts);
+    check_encoded(t, false, &["F", "3C"], true, shifts);
+    let c = LatticeKind::Cubic;
+    let two = ["##\n##\n\n##\n##", "####\n####"];
+    assert_eq!(check_encoded(c, false, &two, true, shifts), 2);
+    check_encoded(
+        c,
+        false,
+        &["###\n#..\n\n##.\n...", "###\n###"],
+        false,
+        shifts,
     );
 }
 

@@ -223,3 +223,76 @@ fn a_deadline_stops_a_large_encoding() {
         }
     }
 }
+
+/// Records the encodings the search builds.
+struct Encodings(std::sync::Mutex<Vec<(usize, dissect_exact::EncodingSize)>>);
+
+impl dissect_exact::ExactObserver for Encodings {
+    fn on_event(&self, event: &dissect_exact::ExactEvent) {
+        if let dissect_exact::ExactEvent::Encoded { pieces, size, .. } = event {
+            self.0.lock().expect("lock").push((*pieces, *size));
+        }
+    }
+}
+
+#[test]
+fn figures_over_the_full_graph_size_get_a_sat_model_by_shifts() {
+    // 676 cells each (over FULL_GRAPH_MAX_CELLS): no incompatibility graph,
+    // a SAT model all the same; one variable per motion would take about
+    // 1 GB here, the shift chain a few dozen MB. Two 13×26 halves.
+    let figs = square(&[rect(26, 26), rect(13, 52)]);
+    assert!(figs[0].len() > dissect_exact::bound::FULL_GRAPH_MAX_CELLS);
+    let options = ExactOptions {
+        mode: Mode::Minimum,
+        sat_max_cells: dissect_exact::bound::SAT_MAX_CELLS,
+        ..ExactOptions::default()
+    };
+    let stop = AtomicBool::new(false);
+    let upper = AtomicUsize::new(usize::MAX);
+    let default = search(&figs, &ExactOptions::default(), &stop, &upper, &()).expect("runs");
+    assert!(
+        matches!(
+            default.limit,
+            Some(dissect_exact::Limit::Cells { cells: 676 })
+        ),
+        "by default figures over the full graph's size get no SAT model: {default:?}"
+    );
+    let seen = Encodings(std::sync::Mutex::new(Vec::new()));
+    let outcome = search(&figs, &options, &stop, &upper, &seen).expect("search runs");
+    let found = outcome.found.clone().expect("two halves");
+    let count = dissect_core::verify::verify_pieces(LatticeKind::Square, true, &figs, &found)
+        .expect("a valid dissection");
+    assert_eq!(count, 2);
+    assert!(outcome.optimal(), "{:?}", outcome.lower_bound);
+    let seen = seen.0.lock().expect("lock");
+    assert!(!seen.is_empty());
+    for (k, size) in seen.iter() {
+        let bytes = size.bytes(false);
+        assert!(bytes < 256 << 20, "k={k}: {size:?}, {bytes} bytes");
+    }
+}
+
+#[test]
+fn a_deadline_stops_the_shift_estimate_and_encoding_of_large_figures() {
+    // 1,800 cells each, SAT models allowed up to 2,000 cells: the shift
+    // chain's estimate and encoding take seconds; deadlines inside them end
+    // the search within a second or so.
+    let figs = square(&[rect(60, 30), rect(45, 40)]);
+    for ms in [200, 1000, 2500] {
+        let stop = AtomicBool::new(false);
+        let start = Instant::now();
+        let options = ExactOptions {
+            deadline: Some(start + Duration::from_millis(ms)),
+            sat_max_cells: dissect_exact::bound::SAT_MAX_CELLS,
+            max_encoding_bytes: 4 << 30,
+            ..ExactOptions::default()
+        };
+        let outcome = run(&figs, &options, &stop);
+        let took = start.elapsed();
+        assert!(
+            took < Duration::from_millis(ms + 1200),
+            "deadline {ms} ms, took {took:?}"
+        );
+        assert!(outcome.stopped || outcome.found.is_some(), "{outcome:?}");
+    }
+}
