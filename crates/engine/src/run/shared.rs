@@ -253,7 +253,15 @@ impl Observer for Shared<'_> {
                 found: false,
                 ..
             } => self.raise_lower(2, || {
-                let r = "the figures are not congruent".to_string();
+                // A judged run refuses one piece that breaks a constraint
+                // (a single piece has level 0): the figures may well be
+                // congruent.
+                let r = if self.judge.is_some() {
+                    "no single piece honours the constraints"
+                } else {
+                    "the figures are not congruent"
+                }
+                .to_string();
                 (r.clone(), r)
             }),
             Event::Improved {
