@@ -361,3 +361,74 @@ fn grow_half(lattice: LatticeKind, piece: &[Cell], seed: Cell) -> Vec<Cell> {
     order.sort_unstable();
     order
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use dissect_puzzle::disassembly::{disassemble, Disassembly, Limits};
+    use dissect_testkit::disassembly::{replay, PlanMove};
+
+    /// A 4×4×4 cube with a 2×2×2 cavity.
+    const CAVITY: &str = "####\n####\n####\n####\n\n####\n#..#\n#..#\n####\n\n####\n#..#\n#..#\n####\n\n####\n####\n####\n####\n";
+
+    #[test]
+    fn a_level_one_cut_is_cut_again_until_it_interlocks() {
+        let lattice = LatticeKind::Cubic;
+        let cube = dissect_core::io::parse_figure(CAVITY, lattice).unwrap();
+        let figures = vec![cube.clone(), cube.clone()];
+        // Two halves (x < 2, x >= 2), in place in both figures: level 1.
+        let halves: Vec<Vec<Cell>> = [true, false]
+            .iter()
+            .map(|left| {
+                cube.cells()
+                    .iter()
+                    .copied()
+                    .filter(|c| (c[0] < 2) == *left)
+                    .collect()
+            })
+            .collect();
+        let start = vec![halves.clone(), halves];
+        let constraints = Constraints::none().with_assembly(false, Some(2));
+        let motions = Motions::new(lattice, false);
+        assert!(!constraints.check(&motions, &start).is_empty(), "level 1");
+        let stop = AtomicBool::new(false);
+        let search = Interlock {
+            figures: &figures,
+            mirror: false,
+            constraints: &constraints,
+            motions: &motions,
+            stop: &stop,
+            deadline: Some(Instant::now() + Duration::from_secs(60)),
+            steps: 200,
+            seed: 1,
+        };
+        let found = search.run(&[start]).expect("an interlocking cut");
+        dissect_core::verify::verify_pieces(lattice, false, &figures, &found).unwrap();
+        assert!(constraints.check(&motions, &found).is_empty());
+        assert!(found[0].len() <= 2 + MAX_EXTRA_PIECES);
+        // Each figure's plan, replayed by the independent checker.
+        for fig in &found {
+            let Disassembly::Apart(plan) =
+                disassemble(lattice.lattice(), fig, Limits::default()).unwrap()
+            else {
+                panic!("it comes apart");
+            };
+            let moves: Vec<PlanMove> = plan
+                .moves
+                .iter()
+                .map(|m| PlanMove {
+                    pieces: m.pieces.clone(),
+                    by: m.by,
+                    removed: m.removed,
+                })
+                .collect();
+            let level = replay(fig, &moves).unwrap();
+            assert_eq!(level, plan.level);
+            assert!(level >= 2, "level {level}");
+        }
+        // A raised stop flag ends it at once, with nothing.
+        stop.store(true, Ordering::SeqCst);
+        let halves = found.clone();
+        assert_eq!(search.run(&[halves]), None);
+    }
+}

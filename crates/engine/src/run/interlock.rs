@@ -60,6 +60,11 @@ pub(super) fn interlock(
     };
     if let Some(found) = search.run(&starts) {
         if let Some((pieces, count)) = judge.collect(&found) {
+            judge
+                .interlocked
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .push(found);
             shared.found(pieces, Source::Interlock);
             shared.observer.on_event(&EngineEvent::Collected {
                 pieces,

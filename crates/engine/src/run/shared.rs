@@ -32,6 +32,8 @@ pub(super) struct Judge {
     /// pieces (at most [`MAX_REFUSED`]): where the interlocking search
     /// starts.
     refused: Mutex<Vec<Vec<Vec<Vec<Cell>>>>>,
+    /// The answers of the interlocking search (their source in the report).
+    pub(super) interlocked: Mutex<Vec<Vec<Vec<Vec<Cell>>>>>,
 }
 
 /// The most refused dissections a judge keeps for the interlocking search.
@@ -50,6 +52,7 @@ impl Judge {
             collection: Mutex::new(Collection::new(motions.clone(), constraints.clone())),
             wanted,
             refused: Mutex::new(Vec::new()),
+            interlocked: Mutex::new(Vec::new()),
         }
     }
 
