@@ -427,7 +427,7 @@ async fn constraints_no_dissection_can_meet_end_without_an_answer() {
 async fn min_level_reaches_the_solver_and_a_box_is_refused() {
     let app = app();
     // A 4×4×4 cube with a 2×2×2 cavity, twice: one piece plainly (level
-    // 0); min_level 2 needs the interlocking search.
+    // 0); min_level 2 needs a cut into pieces that interlock.
     let cavity = "####\n####\n####\n####\n\n####\n#..#\n#..#\n####\n\n####\n#..#\n#..#\n####\n\n####\n####\n####\n####\n";
     let v = solve(
         &app,

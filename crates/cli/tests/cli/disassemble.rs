@@ -279,7 +279,7 @@ const CAVITY_CUBE: &str =
 #[test]
 fn solve_min_level_2_interlocks_and_its_plans_replay() {
     // The figures are congruent: one piece is the plain answer (level 0),
-    // so --min-level 2 needs the interlocking search to cut it.
+    // so --min-level 2 needs a cut into pieces that interlock.
     let sb = Sandbox::new();
     sb.write("a.txt", CAVITY_CUBE);
     sb.write("b.txt", CAVITY_CUBE);
