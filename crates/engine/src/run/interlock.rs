@@ -15,7 +15,7 @@ use crate::report::{End, Source};
 
 /// Neighbourhoods the interlocking search may try in a run without a time
 /// limit (its work rule).
-pub const INTERLOCK_STEPS: usize = 400;
+pub const INTERLOCK_STEPS: usize = 100;
 
 /// Runs the interlocking search when the run has the assembly rules, no
 /// answer honours them yet, a valid dissection was refused, and neither
