@@ -42,6 +42,7 @@ mod assemblies;
 mod bound;
 mod disassemble;
 mod enumerate;
+mod interlock;
 mod limits;
 mod monitor;
 mod options;

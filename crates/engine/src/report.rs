@@ -23,11 +23,14 @@ pub enum Source {
     Sectors,
     /// Touching pieces of the best dissection cut again exactly, fewer.
     Regroup,
+    /// The interlocking search (`--min-level`, `--assemblable`): touching
+    /// pieces of a refused dissection cut again until it holds together.
+    Interlock,
 }
 
 impl Source {
-    /// `greedy`, `search`, `repair`, `sat`, `coarse`, `sectors` or
-    /// `regroup`.
+    /// `greedy`, `search`, `repair`, `sat`, `coarse`, `sectors`,
+    /// `regroup` or `interlock`.
     pub fn name(self) -> &'static str {
         match self {
             Source::Greedy => "greedy",
@@ -37,6 +40,7 @@ impl Source {
             Source::Coarse => "coarse",
             Source::Sectors => "sectors",
             Source::Regroup => "regroup",
+            Source::Interlock => "interlock",
         }
     }
 }

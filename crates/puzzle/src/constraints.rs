@@ -128,6 +128,18 @@ pub enum ConstraintError {
     /// flat piece lifts off: level 1).
     #[error("impossible: --min-level {0} on a flat lattice (every piece of a flat figure lifts off: level 1)")]
     FlatLevel(usize),
+    /// Occurs when a level of 2 or more is asked and a figure meets every
+    /// line along a lattice axis in one run of cells at most
+    /// ([`crate::disassembly::axis_convex`]: a box, a cube, a slab): there
+    /// the first group that can move at all can go away at once, so its
+    /// level is 1.
+    #[error("impossible: --min-level {level}: figure {figure} meets every line along an axis in one run of cells (a box, a cube, a slab...), so the first group that can move in it comes free at once: level 1")]
+    ConvexLevel {
+        /// The figure (1-based).
+        figure: usize,
+        /// The level asked.
+        level: usize,
+    },
     /// Occurs when the symmetry weight is negative or not a number.
     #[error("--symmetry-weight must be a number >= 0, not {0}")]
     SymmetryWeight(String),
@@ -145,6 +157,7 @@ impl ConstraintError {
                 | ConstraintError::RegionTooLarge { .. }
                 | ConstraintError::ColourCounts(_)
                 | ConstraintError::FlatLevel(_)
+                | ConstraintError::ConvexLevel { .. }
         )
     }
 }
@@ -615,6 +628,18 @@ impl Constraints {
         if let (Some(level), Some(f)) = (self.min_level, figures.first()) {
             if level >= 2 && f.lattice().lattice().dim() < 3 {
                 return Err(ConstraintError::FlatLevel(level));
+            }
+            let lattice = f.lattice().lattice();
+            if level >= 2 {
+                if let Some(i) = figures
+                    .iter()
+                    .position(|g| crate::disassembly::axis_convex(lattice, g.cells()))
+                {
+                    return Err(ConstraintError::ConvexLevel {
+                        figure: i + 1,
+                        level,
+                    });
+                }
             }
         }
         if !(self.symmetry_weight.is_finite() && self.symmetry_weight >= 0.0) {

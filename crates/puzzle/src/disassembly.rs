@@ -661,3 +661,103 @@ pub fn plan_json(lattice: dissect_core::LatticeKind, figures: &[(&str, &Disassem
     out += "\n  ]\n}\n";
     out
 }
+
+/// How far the assembled figure made of `pieces` is from interlocking. For
+/// each piece and each of the lattice's `2 × dim` unit directions `d`, the
+/// piece's *sweep closure*: the piece and, closed under the rule, every
+/// piece that has a cell anywhere ahead (along `d`) of a cell of the
+/// closure; it is the smallest group holding the piece that can go away to
+/// infinity along `d` at once. The distance is the sum, over those pairs,
+/// of the pieces outside the closure. So 0 means that no group comes free
+/// by one move (the level is at least 2, or the figure is locked), and a
+/// lower distance is a figure closer to that: the interlocking search
+/// steers by it. A flat figure has nothing to hold its pieces: every
+/// closure counts as the piece alone, `2 × dim × n × (n - 1)` (0 for a
+/// single piece).
+pub fn interlock_distance(lattice: &dyn Lattice, pieces: &[Vec<Cell>]) -> usize {
+    let n = pieces.len();
+    if lattice.dim() < 3 || n < 2 {
+        return 2 * lattice.dim() * n * n.saturating_sub(1);
+    }
+    let mut owner: HashMap<Point, usize> = HashMap::new();
+    let (mut lo, mut hi) = ([i32::MAX; 3], [i32::MIN; 3]);
+    for (i, p) in pieces.iter().enumerate() {
+        for c in p {
+            let q = lattice.to_point(*c);
+            for d in 0..3 {
+                lo[d] = lo[d].min(q[d]);
+                hi[d] = hi[d].max(q[d]);
+            }
+            owner.insert(q, i);
+        }
+    }
+    let inside = |q: Point| (0..3).all(|d| q[d] >= lo[d] && q[d] <= hi[d]);
+    let step = lattice.modulus();
+    let mut free = 0;
+    for axis in 0..lattice.dim() {
+        for sign in [1, -1] {
+            let mut v = [0; 3];
+            v[axis] = sign * step;
+            let dir = Point::from(v);
+            // ahead[q]: the pieces with a cell ahead of a cell of q.
+            let mut ahead: Vec<Vec<bool>> = vec![vec![false; n]; n];
+            for (q, p) in pieces.iter().enumerate() {
+                for c in p {
+                    let mut at = lattice.to_point(*c) + dir;
+                    while inside(at) {
+                        if let Some(&o) = owner.get(&at) {
+                            ahead[q][o] = true;
+                        }
+                        at = at + dir;
+                    }
+                }
+            }
+            for q in 0..n {
+                let mut seen = vec![false; n];
+                seen[q] = true;
+                let mut todo = vec![q];
+                while let Some(a) = todo.pop() {
+                    for (b, &is_ahead) in ahead[a].iter().enumerate() {
+                        if is_ahead && !seen[b] {
+                            seen[b] = true;
+                            todo.push(b);
+                        }
+                    }
+                }
+                free += seen.iter().filter(|s| !**s).count();
+            }
+        }
+    }
+    free
+}
+
+/// Whether every line along one of the lattice's axes meets `cells` in one
+/// run of consecutive cells at most (a box, a cube, a slab, any shape
+/// without a dent, a tunnel or a cavity along the axes). No figure of this
+/// kind has a level of 2 or more: a group that can move one step along `d`
+/// has, on every line along `d`, only cells whose next cell is its own or
+/// outside the figure, so on each line it holds the end of the run, nothing
+/// of the rest lies ahead of it, and the move can go on to infinity: the
+/// first move is a removal.
+pub fn axis_convex(lattice: &dyn Lattice, cells: &[Cell]) -> bool {
+    let step = lattice.modulus();
+    let points: Vec<Point> = cells.iter().map(|c| lattice.to_point(*c)).collect();
+    (0..lattice.dim()).all(|axis| {
+        // The line of a point: its other coordinates and its residue along
+        // the axis; the runs: its positions along the axis, in steps.
+        let mut lines: HashMap<([i32; 3], i32), Vec<i32>> = HashMap::new();
+        for p in &points {
+            let mut key = p.coords();
+            let at = key[axis];
+            key[axis] = 0;
+            lines
+                .entry((key, at.rem_euclid(step)))
+                .or_default()
+                .push(at.div_euclid(step));
+        }
+        lines.values_mut().all(|v| {
+            v.sort_unstable();
+            v.windows(2).all(|w| w[1] - w[0] <= 1)
+        })
+    })
+}

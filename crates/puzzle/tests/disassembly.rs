@@ -561,3 +561,40 @@ fn rank_level_puts_the_most_interlocking_first() {
     assert_eq!(order, vec!["2", "1", "locked"]);
     assert_eq!("level".parse::<Rank>(), Ok(Rank::Level));
 }
+
+#[test]
+fn a_box_has_no_level_two_and_the_interlock_distance_sees_it() {
+    use dissect_puzzle::constraints::ConstraintError;
+    use dissect_puzzle::disassembly::{axis_convex, interlock_distance};
+    use dissect_puzzle::Constraints;
+    let parse = |t: &str| dissect_core::io::parse_figure(t, LatticeKind::Cubic).unwrap();
+    let cube = parse("##\n##\n\n##\n##\n");
+    let slab = parse("####\n####\n");
+    let cavity = parse("###\n###\n###\n\n###\n#.#\n###\n\n###\n###\n###\n");
+    let dent = parse("###\n\n#.#\n\n###\n");
+    assert!(axis_convex(cubic(), cube.cells()));
+    assert!(axis_convex(cubic(), slab.cells()));
+    assert!(!axis_convex(cubic(), cavity.cells()));
+    assert!(!axis_convex(cubic(), dent.cells()));
+    let level2 = Constraints::none().with_assembly(false, Some(2));
+    let e = level2.validate(&[cavity.clone(), slab]).unwrap_err();
+    assert_eq!(
+        e,
+        ConstraintError::ConvexLevel {
+            figure: 2,
+            level: 2
+        }
+    );
+    assert!(e.is_impossible());
+    assert!(level2.validate(&[cavity.clone(), cavity]).is_ok());
+    // The slider needs a move before its first removal: nothing comes
+    // free at once. Linked rings are locked: nothing either. Two halves of
+    // a cube come free at once (each in 5 of 6 directions, 1 piece left
+    // out each time).
+    assert_eq!(interlock_distance(cubic(), &slider()), 0);
+    assert_eq!(interlock_distance(cubic(), &voxel_pieces(LINKED_RINGS)), 0);
+    let halves = voxel_pieces("AB\nAB\n\nAB\nAB\n");
+    assert_eq!(interlock_distance(cubic(), &halves), 10);
+    // One piece has nothing to hold.
+    assert_eq!(interlock_distance(cubic(), &voxel_pieces("AA\n")), 0);
+}

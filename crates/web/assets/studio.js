@@ -321,6 +321,8 @@ function updatePuzzleSet() {
   if ($('#opt-max-piece').value.trim()) set.push(`max ${$('#opt-max-piece').value}`);
   if (Number($('#opt-symmetry').value)) set.push(`symmetry ${$('#opt-symmetry').value}`);
   if ($('#opt-checkerboard').checked) set.push('checkerboard');
+  if ($('#opt-assemblable').checked) set.push('assemblable');
+  if ($('#opt-min-level').value.trim()) set.push(`level ≥ ${$('#opt-min-level').value}`);
   if (keepJson().length) set.push('keep regions');
   $('#puzzle-set').textContent = set.length ? `(${set.join(', ')})` : '';
 }
@@ -746,6 +748,9 @@ async function startSolve() {
   if (minPiece !== null) body.min_piece = minPiece;
   if (maxPiece !== null) body.max_piece = maxPiece;
   if ($('#opt-checkerboard').checked && !$('#opt-checkerboard').disabled) body.checkerboard = true;
+  if ($('#opt-assemblable').checked) body.assemblable = true;
+  const minLevel = size('#opt-min-level');
+  if (minLevel !== null) body.min_level = minLevel;
   const weight = Number($('#opt-symmetry').value);
   if (weight) body.symmetry_weight = weight;
   const keep = keepJson();
@@ -1262,7 +1267,7 @@ async function init() {
   const showLetter = () => { letters.style.background = letterColour(state.keepLetter); };
   letters.onchange = () => { state.keepLetter = letters.value; showLetter(); selectTool('keep'); };
   showLetter();
-  for (const sel of ['#opt-solutions', '#opt-rank', '#opt-min-piece', '#opt-max-piece', '#opt-symmetry', '#opt-checkerboard']) {
+  for (const sel of ['#opt-solutions', '#opt-rank', '#opt-min-piece', '#opt-max-piece', '#opt-symmetry', '#opt-checkerboard', '#opt-assemblable', '#opt-min-level']) {
     // On every keystroke: the summary's height settles before a click on Solve.
     $(sel).addEventListener('input', updatePuzzleSet);
     $(sel).addEventListener('change', updatePuzzleSet);

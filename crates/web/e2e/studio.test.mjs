@@ -453,6 +453,41 @@ test('keep-whole regions painted on a figure, piece sizes and the checkerboard s
   assert.deepEqual(pageErrors, []);
 });
 
+test('cubic: assemblable and a minimum level reach the solver; the answer reports its levels', async () => {
+  await open();
+  await page.selectOption('[data-testid=lattice]', 'cubic');
+  // A 2×2×2 cube and a 4×2×1 slab.
+  await setSize(0, 2, 2);
+  await card(0).locator('input.d').fill('2');
+  await card(0).locator('input.d').dispatchEvent('change');
+  await tool('fill');
+  await click(0, 0, 0);
+  await card(0).locator('.layers button', { hasText: 'z1' }).click();
+  await click(0, 0, 0);
+  await setSize(1, 4, 2);
+  await click(1, 0, 0);
+  assert.match(await page.textContent('[data-testid=areas]'), /every figure has 8 cells/);
+  await page.click('[data-testid=puzzle] summary');
+  await page.check('[data-testid=opt-assemblable]');
+  await page.fill('[data-testid=opt-min-level]', '1');
+  assert.match(await page.textContent('#puzzle-set'), /assemblable, level ≥ 1/);
+  await solveAndWait(10);
+  const solution = await verifyShown('cubic');
+  assert.deepEqual(solution.constraints, { assemblable: true, min_level: 1 });
+  assert.equal(solution.levels.length, 2, JSON.stringify(solution.levels));
+  assert.ok(solution.levels.every((l) => l >= 1), JSON.stringify(solution.levels));
+  // The studio shows each figure's level.
+  await page.waitForSelector('#disassembly:not([hidden])');
+  assert.match(await page.textContent('[data-testid=level-0]'), /level \d+ \(apart in \d+ moves?\)/);
+  assert.match(await page.textContent('[data-testid=level-1]'), /level \d+/);
+  // Level 2 in a box is impossible: said at once, no solve.
+  await page.fill('[data-testid=opt-min-level]', '2');
+  await page.click('[data-testid=solve]');
+  await page.waitForSelector('#message:not([hidden])');
+  assert.match(await page.textContent('#message'), /cannot all hold: impossible: min_level 2: figure 1 meets every line/);
+  assert.deepEqual(pageErrors, []);
+});
+
 test('all solutions: every minimum dissection counted, complete, and stepped through class by class', async () => {
   await open();
   // Figure a: a 3x2 rectangle; figure b: an L of 4 + 2 cells (10

@@ -66,6 +66,11 @@ pub struct ConstraintInput {
     pub checkerboard: bool,
     /// The weight of the symmetry term.
     pub symmetry_weight: Option<f64>,
+    /// Every 3D figure comes apart by straight moves (`--assemblable`).
+    pub assemblable: bool,
+    /// Every figure needs at least this many moves before its first piece
+    /// comes free (`--min-level`; implies `assemblable`).
+    pub min_level: Option<usize>,
 }
 
 /// A constraint error as an API error: impossible ones (well formed, but
@@ -117,6 +122,7 @@ pub fn constraints(
     let mut c = Constraints::none()
         .with_sizes(input.min_piece, input.max_piece)
         .with_checkerboard(input.checkerboard)
+        .with_assembly(input.assemblable, input.min_level)
         .with_symmetry_weight(input.symmetry_weight.unwrap_or(0.0));
     let l = lattice.lattice();
     for (n, k) in input.keep.iter().enumerate() {

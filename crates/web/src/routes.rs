@@ -226,6 +226,12 @@ struct SolveRequest {
     /// `--symmetry-weight`.
     #[serde(default)]
     symmetry_weight: Option<f64>,
+    /// `--assemblable`.
+    #[serde(default)]
+    assemblable: Option<bool>,
+    /// `--min-level`.
+    #[serde(default)]
+    min_level: Option<usize>,
     /// "All solutions": every dissection with the fewest pieces, counted
     /// (`dissect enumerate`), instead of a solve.
     #[serde(default)]
@@ -244,6 +250,8 @@ impl SolveRequest {
             ("min_piece", self.min_piece.is_some()),
             ("max_piece", self.max_piece.is_some()),
             ("checkerboard", self.checkerboard == Some(true)),
+            ("assemblable", self.assemblable == Some(true)),
+            ("min_level", self.min_level.is_some()),
             (
                 "symmetry_weight",
                 self.symmetry_weight.is_some_and(|w| w != 0.0),
@@ -369,6 +377,8 @@ async fn start_solve(
             max_piece: req.max_piece,
             checkerboard: req.checkerboard.unwrap_or(false),
             symmetry_weight: req.symmetry_weight,
+            assemblable: req.assemblable.unwrap_or(false),
+            min_level: req.min_level,
         },
         lattice,
         &as_given,

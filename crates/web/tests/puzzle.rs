@@ -422,3 +422,45 @@ async fn constraints_no_dissection_can_meet_end_without_an_answer() {
     assert_eq!(r["found"], false, "{r}");
     assert!(r["ranking"]["constraints"]["keep"].is_array(), "{r}");
 }
+
+#[tokio::test]
+async fn min_level_reaches_the_solver_and_a_box_is_refused() {
+    let app = app();
+    // A 4×4×4 cube with a 2×2×2 cavity, twice: one piece plainly (level
+    // 0); min_level 2 needs a cut into pieces that interlock.
+    let cavity = "####\n####\n####\n####\n\n####\n#..#\n#..#\n####\n\n####\n#..#\n#..#\n####\n\n####\n####\n####\n####\n";
+    let v = solve(
+        &app,
+        json!({"lattice": "cubic", "time_limit": 30, "seed": 1, "min_level": 2,
+            "figures": [{"name": "a.txt", "text": cavity}, {"name": "b.txt", "text": cavity}]}),
+    )
+    .await;
+    let result = &v["result"];
+    assert_eq!(result["found"], true, "{result}");
+    let s = &result["solutions"][0];
+    let (_, d) = parse_solution(s["solution_text"].as_str().unwrap()).unwrap();
+    let figure = parse_figure(cavity, LatticeKind::Cubic).unwrap();
+    dissect_core::verify::verify(&d, &[figure.clone(), figure]).expect("a valid dissection");
+    let c = Constraints::none().with_assembly(false, Some(2));
+    let motions = Motions::new(LatticeKind::Cubic, true);
+    assert_eq!(c.check(&motions, d.pieces()), vec![], "{s}");
+    let levels = s["solution"]["levels"].as_array().expect("levels");
+    assert_eq!(levels.len(), 2, "{s}");
+    assert!(levels.iter().all(|l| l.as_u64() >= Some(2)), "{s}");
+    assert_eq!(
+        result["ranking"]["constraints"],
+        json!({"assemblable": true, "min_level": 2})
+    );
+    // In a box no group slides before it comes free: refused at once.
+    let body = json!({"lattice": "cubic", "time_limit": 5, "min_level": 2,
+        "figures": [{"text": "##\n##\n\n##\n##\n"}, {"text": "####\n####\n"}]});
+    let (s, v) = call(&app, "POST", "/api/solve", &body.to_string()).await;
+    assert_eq!(s, StatusCode::UNPROCESSABLE_ENTITY, "{v}");
+    assert!(
+        v["error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("min_level 2: figure 1 meets every line"),
+        "{v}"
+    );
+}

@@ -270,3 +270,85 @@ fn min_level_on_flat_figures_is_impossible() {
         .expect_code(2)
         .stderr_has(&["--min-level must be at least 1"]);
 }
+
+/// A 4×4×4 cube with a 2×2×2 cavity: no line along an axis through the
+/// cavity meets it in one run, so a group can slide into the cavity.
+const CAVITY_CUBE: &str =
+    "####\n####\n####\n####\n\n####\n#..#\n#..#\n####\n\n####\n#..#\n#..#\n####\n\n####\n####\n####\n####\n";
+
+#[test]
+fn solve_min_level_2_interlocks_and_its_plans_replay() {
+    // The figures are congruent: one piece is the plain answer (level 0),
+    // so --min-level 2 needs a cut into pieces that interlock.
+    let sb = Sandbox::new();
+    sb.write("a.txt", CAVITY_CUBE);
+    sb.write("b.txt", CAVITY_CUBE);
+    let args = [
+        "solve",
+        "--lattice",
+        "cubic",
+        "--seed",
+        "1",
+        "--time-limit",
+        "60",
+        "--min-level",
+        "2",
+        "--quiet",
+        "-o",
+        "s.json",
+        "a.txt",
+        "b.txt",
+    ];
+    sb.run(&args).expect_code(0);
+    crate::support::assert_valid(&sb, "cubic", "s.json", &["a.txt", "b.txt"]);
+    let solution = json(&sb.read("s.json"));
+    let pieces = solution["figures"][0]["pieces"].as_array().unwrap().len();
+    assert!((2..=3).contains(&pieces), "{solution}");
+    let run = sb.run(&[
+        "disassemble",
+        "--lattice",
+        "cubic",
+        "--solution",
+        "s.json",
+        "-o",
+        "p.json",
+        "a.txt",
+        "b.txt",
+    ]);
+    run.expect_code(0);
+    let replayed = replay_all(&json(&sb.read("p.json")), &solution);
+    assert_eq!(replayed.len(), 2);
+    for level in &replayed {
+        assert!(level.is_some_and(|l| l >= 2), "{replayed:?}");
+    }
+    let recorded: Vec<Option<usize>> = solution["levels"]
+        .as_array()
+        .expect("levels")
+        .iter()
+        .map(|l| l.as_u64().map(|l| l as usize))
+        .collect();
+    assert_eq!(recorded, replayed);
+}
+
+#[test]
+fn min_level_2_on_a_box_is_impossible_at_once() {
+    let sb = Sandbox::new();
+    sb.write("a.txt", CAVITY_CUBE);
+    sb.write(
+        "b.txt",
+        "#######\n#######\n#######\n#######\n\n#######\n#######\n#######\n#######\n",
+    );
+    let run = sb.run(&[
+        "solve",
+        "--lattice",
+        "cubic",
+        "--time-limit",
+        "60",
+        "--min-level",
+        "2",
+        "a.txt",
+        "b.txt",
+    ]);
+    run.expect_code(1)
+        .stderr_has(&["figure 2 meets every line along an axis in one run"]);
+}

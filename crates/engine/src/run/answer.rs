@@ -137,6 +137,13 @@ fn ranked(
             Source::Sat
         } else if heuristic_pieces.as_ref() == Some(&e.pieces) {
             heuristic_source
+        } else if judge
+            .interlocked
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .contains(&e.pieces)
+        {
+            Source::Interlock
         } else {
             Source::Search
         };

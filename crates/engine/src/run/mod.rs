@@ -5,6 +5,7 @@
 //! verification, ranking, report).
 
 mod answer;
+mod interlock;
 mod order;
 mod polish;
 mod shared;
@@ -42,6 +43,10 @@ const EXACT_GRACE: Duration = Duration::from_millis(300);
 /// With a time limit, the share of it at its end that goes to the polish
 /// when the answer has a sliver.
 pub const POLISH_SHARE: f64 = 0.15;
+
+/// With a time limit and the assembly rules, the share of it at its end
+/// that goes to the interlocking search when no answer honours them yet.
+pub const INTERLOCK_SHARE: f64 = 0.6;
 
 /// No polish within a time limit shorter than this share leaves.
 const POLISH_LEAST: Duration = Duration::from_millis(500);
@@ -107,6 +112,9 @@ pub enum Phase {
     /// The ranking of several solutions (their assemblies counted with
     /// `--rank unique`).
     Ranking,
+    /// The interlocking search (`--min-level`, `--assemblable`: no
+    /// dissection found honoured the assembly rules).
+    Interlock,
 }
 
 /// Receives [`EngineEvent`]s (from worker threads).
@@ -275,6 +283,7 @@ fn run_in_order(
     let repairer = plan.config().repair.then_some(&exact_repair as &dyn Repair);
     let mut sides = sides::search(&plan, &shared, stop, repairer, executor)?;
     polish::polish(&plan, &shared, stop, &mut sides, repairer, executor)?;
+    interlock::interlock(&plan, &shared, stop, &mut sides);
     answer::answer(&plan, &shared, stop, sides)
 }
 
@@ -296,6 +305,9 @@ pub(super) struct Plan<'r> {
     polishable: bool,
     /// With a time limit, the instant from which the polish takes over.
     polish_from: Option<Instant>,
+    /// With a time limit and the assembly rules, the instant from which
+    /// the interlocking search takes over when no answer honours them.
+    interlock_from: Option<Instant>,
 }
 
 impl<'r> Plan<'r> {
@@ -316,6 +328,11 @@ impl<'r> Plan<'r> {
             .map(|t| t.mul_f64(POLISH_SHARE))
             .filter(|r| polishable && *r >= POLISH_LEAST)
             .and_then(|r| deadline.map(|d| d - r));
+        let interlock_from = options
+            .time_limit()
+            .filter(|_| config.constraints.assemblable() && options.collects())
+            .map(|t| t.mul_f64(INTERLOCK_SHARE))
+            .and_then(|r| deadline.map(|d| d - r));
         Plan {
             figures,
             options,
@@ -331,6 +348,7 @@ impl<'r> Plan<'r> {
             exact_on: strategy == Strategy::Exact || config.prove,
             polishable,
             polish_from,
+            interlock_from,
         }
     }
 

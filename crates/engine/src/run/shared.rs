@@ -10,6 +10,7 @@ use std::time::Instant;
 use dissect_core::solver::{Event, Judgement, Observer, Via};
 use dissect_core::Cell;
 use dissect_exact::{Bound, ExactEvent, ExactObserver, Reason};
+use dissect_puzzle::constraints::Violation;
 use dissect_puzzle::{Added, Collection, Constraints, Motions};
 
 use super::{EngineEvent, EngineObserver, CONSTRAINT_PENALTY, MAX_COLLECTED, SLIVER_CELLS};
@@ -27,7 +28,16 @@ pub(super) struct Judge {
     /// Solutions asked for: a new one up to this many is fresh (progress
     /// for the run's work rule).
     pub(super) wanted: usize,
+    /// Valid dissections refused only by the assembly rules, the fewest
+    /// pieces (at most [`MAX_REFUSED`]): where the interlocking search
+    /// starts.
+    refused: Mutex<Vec<Vec<Vec<Vec<Cell>>>>>,
+    /// The answers of the interlocking search (their source in the report).
+    pub(super) interlocked: Mutex<Vec<Vec<Vec<Vec<Cell>>>>>,
 }
+
+/// The most refused dissections a judge keeps for the interlocking search.
+const MAX_REFUSED: usize = 8;
 
 impl Judge {
     /// The judge of a run that collects `wanted` solutions honouring
@@ -41,7 +51,41 @@ impl Judge {
                 || constraints.max_piece().is_some(),
             collection: Mutex::new(Collection::new(motions.clone(), constraints.clone())),
             wanted,
+            refused: Mutex::new(Vec::new()),
+            interlocked: Mutex::new(Vec::new()),
         }
+    }
+
+    /// Keeps a valid dissection that only the assembly rules refuse, when
+    /// it has no more pieces than those kept (fewer: they are dropped).
+    fn refuse(&self, pieces: &[Vec<Vec<Cell>>]) {
+        let mut r = self.refused.lock().unwrap_or_else(|e| e.into_inner());
+        let n = pieces.first().map_or(0, Vec::len);
+        let kept = r.first().map_or(usize::MAX, |p| p[0].len());
+        if n < kept {
+            r.clear();
+        }
+        if n <= kept && r.len() < MAX_REFUSED && !r.iter().any(|p| p == pieces) {
+            r.push(pieces.to_vec());
+        }
+    }
+
+    /// Whether a valid dissection was refused only by the assembly rules.
+    pub(super) fn has_refused(&self) -> bool {
+        !self
+            .refused
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .is_empty()
+    }
+
+    /// The valid dissections refused only by the assembly rules (the
+    /// fewest pieces).
+    pub(super) fn refused(&self) -> Vec<Vec<Vec<Vec<Cell>>>> {
+        self.refused
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .clone()
     }
 
     /// Offers a valid dissection to the collection (skipped past
@@ -212,7 +256,15 @@ impl Observer for Shared<'_> {
                 found: false,
                 ..
             } => self.raise_lower(2, || {
-                let r = "the figures are not congruent".to_string();
+                // A judged run refuses one piece that breaks a constraint
+                // (a single piece has level 0): the figures may well be
+                // congruent.
+                let r = if self.judge.is_some() {
+                    "no single piece honours the constraints"
+                } else {
+                    "the figures are not congruent"
+                }
+                .to_string();
                 (r.clone(), r)
             }),
             Event::Improved {
@@ -259,7 +311,17 @@ impl Observer for Shared<'_> {
                 fresh: false,
             };
         }
-        let accept = j.constraints.check(&j.motions, pieces).is_empty();
+        let broken = j.constraints.check(&j.motions, pieces);
+        let accept = broken.is_empty();
+        if broken.iter().all(|v| {
+            matches!(
+                v,
+                Violation::NotAssemblable { .. } | Violation::LevelTooLow { .. }
+            )
+        }) && !accept
+        {
+            j.refuse(pieces);
+        }
         let mut fresh = false;
         if accept {
             if let Some((pieces, count)) = j.collect(pieces) {

@@ -38,6 +38,8 @@ enum Step {
     Finished,
     /// The last part of the time limit goes to the polish.
     Polish,
+    /// The last part of the time limit goes to the interlocking search.
+    Interlock,
 }
 
 /// The exact side's thread.
@@ -94,6 +96,7 @@ pub(super) fn search(
         Watch::Ended(Step::Optimal) => (End::Optimal, false),
         Watch::Ended(Step::Finished) => (End::Finished, false),
         Watch::Ended(Step::Polish) => (End::TimeLimit, true),
+        Watch::Ended(Step::Interlock) => (End::TimeLimit, false),
     };
     Ok(Sides {
         heuristic: heuristic.transpose()?,
@@ -187,6 +190,16 @@ fn step(
         && !heuristic_done
     {
         return Some(Step::Polish);
+    }
+    // The last part of a time limit goes to the interlocking search when
+    // the assembly rules refused every valid dissection so far.
+    if plan.interlock_from.is_some_and(|t| Instant::now() >= t)
+        && shared
+            .judge
+            .as_ref()
+            .is_some_and(|j| j.collected() == 0 && j.has_refused())
+    {
+        return Some(Step::Interlock);
     }
     let lower = shared.lower_value.load(Ordering::SeqCst);
     // Without a time limit only the heuristic's answer ends the run early
