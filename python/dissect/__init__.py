@@ -456,6 +456,8 @@ def solve(
     checkerboard: bool = False,
     symmetry_weight: Optional[float] = None,
     keep: Union[int, Mapping[int, Regions], None] = None,
+    assemblable: bool = False,
+    min_level: Optional[int] = None,
     mirror: bool = True,
     prove: bool = True,
     exact: bool = False,
@@ -482,6 +484,13 @@ def solve(
       (0-based) that end in one piece, as a regions grid (letters a-z over
       the figure's text), a list of cell groups, or a dict of letter to
       cells. ``keep=NB`` (a number) is the candidates kept per level.
+    * 3D puzzles that can be built: ``assemblable=True`` accepts only
+      dissections whose every figure comes apart by straight moves, and
+      ``min_level=L`` those whose every figure needs at least L moves
+      before its first piece comes free (it interlocks); ``d.disassemble()``
+      gives the plans. A figure that is a box (every line along an axis
+      meets it in one run) always comes apart at level 1, so ``min_level``
+      of 2 or more raises ``NoDissectionFound`` there at once.
     * ``mirror=False``: pieces are not turned over; ``prove=False``: no
       exact lower bound beside the search; ``exact=True``: SAT alone;
       ``paper=True``: the paper's schedule.
@@ -503,6 +512,8 @@ def solve(
         checkerboard=checkerboard,
         symmetry_weight=symmetry_weight,
         keep=keep,
+        assemblable=assemblable,
+        min_level=min_level,
         mirror=mirror,
         prove=prove,
         exact=exact,

@@ -1,6 +1,7 @@
 //! The puzzle options of `solve` (`dissect solve`'s `--solutions`,
 //! `--rank`, `--keep N:REGIONS.txt`, `--min-piece`, `--max-piece`,
-//! `--checkerboard`, `--symmetry-weight`) read from Python values into the
+//! `--checkerboard`, `--symmetry-weight`, `--assemblable`, `--min-level`)
+//! read from Python values into the
 //! engine's [`RunConfig`]; every rule on them is the engine's
 //! ([`dissect_engine::RunOptions::new`], [`dissect_engine::check`],
 //! [`KeepRegions`]), none is repeated here.
@@ -16,13 +17,15 @@ use crate::errors::{error, Kind};
 use crate::figure::cell_from_coords;
 
 /// The puzzle options' names, as `solve` takes them.
-pub(crate) const NAMES: [&str; 6] = [
+pub(crate) const NAMES: [&str; 8] = [
     "solutions",
     "rank",
     "min_piece",
     "max_piece",
     "checkerboard",
     "symmetry_weight",
+    "assemblable",
+    "min_level",
 ];
 
 /// Sets the puzzle option `key` of `config` from `value`; `Ok(false)` when
@@ -83,6 +86,23 @@ pub(crate) fn apply(
                 .constraints
                 .clone()
                 .with_checkerboard(value.extract()?);
+        }
+        "assemblable" => {
+            if !value.is_instance_of::<PyBool>() {
+                return Err(bad(format!(
+                    "assemblable must be True or False, got {value}"
+                )));
+            }
+            let level = config.constraints.min_level();
+            config.constraints = config
+                .constraints
+                .clone()
+                .with_assembly(value.extract()?, level);
+        }
+        "min_level" => {
+            let level = optional(value)?;
+            let assemblable = config.constraints.assemblable();
+            config.constraints = config.constraints.clone().with_assembly(assemblable, level);
         }
         "symmetry_weight" => {
             let w = if value.is_none() {

@@ -137,3 +137,35 @@ def test_a_stopped_search_says_so() -> None:
     assert all(p.line.endswith("not decided (stopped)") for p in plans.figures)
     data: Dict[str, object] = plans.to_dict()
     assert data["format"] == "dissection-disassembly/1"
+
+
+CAVITY_CUBE = (
+    "####\n####\n####\n####\n\n####\n#..#\n#..#\n####\n\n"
+    "####\n#..#\n#..#\n####\n\n####\n####\n####\n####\n"
+)
+
+
+def test_min_level_two_gives_pieces_that_interlock() -> None:
+    # The cube with a cavity, to itself: one piece is the plain answer, so
+    # min_level=2 needs a cut into pieces that hold together.
+    a = Figure.from_text(CAVITY_CUBE, lattice="cubic", name="a")
+    b = Figure.from_text(CAVITY_CUBE, lattice="cubic", name="b")
+    assert dissect.solve([a, b], seed=1).piece_count == 1
+    d = dissect.solve([a, b], seed=1, time_limit=60, min_level=2)
+    d.verify()
+    assert 2 <= d.piece_count <= 3
+    plans = d.disassemble(time_limit=60)
+    assert plans.apart
+    for f, plan in enumerate(plans.figures):
+        assert plan.level is not None and plan.level >= 2, plan.line
+        replay(d.pieces[f], plan)
+    # assemblable alone accepts the one piece; a box never reaches level 2.
+    assert dissect.solve([a, b], seed=1, assemblable=True).piece_count == 1
+    box = Figure.from_text("####\n####\n", lattice="cubic", name="box")
+    bar = Figure.from_text("########\n", lattice="cubic", name="bar")
+    with pytest.raises(dissect.NoDissectionFound):
+        dissect.solve([box, bar], seed=1, min_level=2)
+    with pytest.raises(dissect.OptionError, match="assemblable"):
+        dissect.solve([a, b], seed=1, assemblable=1)
+    with pytest.raises(dissect.OptionError, match="min_level"):
+        dissect.solve([a, b], seed=1, min_level="2")

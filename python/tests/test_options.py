@@ -234,6 +234,7 @@ def _same(a: Sequence[Any], b: Sequence[Any]) -> bool:
 
 def test_options_lists_every_puzzle_option() -> None:
     for name in ("solutions", "rank", "min_piece", "max_piece", "checkerboard",
-                 "symmetry_weight", "keep", "mirror", "prove", "exact", "paper"):
+                 "symmetry_weight", "keep", "assemblable", "min_level", "mirror", "prove",
+                 "exact", "paper"):
         assert name in dissect.OPTIONS
     assert _same(dissect.RANKS, ["variance", "smallest", "shapes", "symmetry", "unique", "level"])
