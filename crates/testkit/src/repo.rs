@@ -13,14 +13,19 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::Once;
 
-/// The repository's root folder.
+/// The repository's root folder: two folders above the package being
+/// tested (`crates/<name>`). Cargo names that package's folder when it
+/// runs a test; the folder this crate was compiled in is the fallback
+/// (a test binary run by hand). The compiled-in path alone could name
+/// another checkout: one target folder serving two checkouts of the same
+/// sources (CI's fresh-clone step) keeps this crate compiled for the first.
 pub fn root() -> PathBuf {
-    let testkit = Path::new(env!("CARGO_MANIFEST_DIR"));
-    // crates/testkit → the repository.
-    testkit
+    let package = std::env::var_os("CARGO_MANIFEST_DIR")
+        .map_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")), PathBuf::from);
+    package
         .ancestors()
         .nth(2)
-        .map_or_else(|| testkit.join("../.."), Path::to_path_buf)
+        .map_or_else(|| package.join("../.."), Path::to_path_buf)
 }
 
 /// The benchmark instances: `instances/` (with its `manifest.json`).
