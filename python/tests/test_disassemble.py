@@ -5,7 +5,7 @@ checker of its own."""
 import json
 import subprocess
 from pathlib import Path
-from typing import Dict, List, Sequence, Set, Tuple
+from typing import Any, Dict, List, Sequence, Set, Tuple
 
 import pytest
 
@@ -165,7 +165,9 @@ def test_min_level_two_gives_pieces_that_interlock() -> None:
     bar = Figure.from_text("########\n", lattice="cubic", name="bar")
     with pytest.raises(dissect.NoDissectionFound):
         dissect.solve([box, bar], seed=1, min_level=2)
-    with pytest.raises(dissect.OptionError, match="assemblable"):
-        dissect.solve([a, b], seed=1, assemblable=1)
-    with pytest.raises(dissect.OptionError, match="min_level"):
-        dissect.solve([a, b], seed=1, min_level="2")
+    bad: Dict[str, Any] = {"assemblable": 1}
+    with pytest.raises(dissect.OptionError, match="assemblable must be True or False"):
+        dissect.solve([a, b], seed=1, **bad)
+    bad = {"min_level": "2"}
+    with pytest.raises(dissect.OptionError, match="min_level must be a whole number"):
+        dissect.solve([a, b], seed=1, **bad)
