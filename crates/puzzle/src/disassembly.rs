@@ -611,55 +611,60 @@ pub const PLAN_FORMAT: &str = "dissection-disassembly/1";
 /// not has `"level": null`, no moves, and `"locked"` (the pieces that hold
 /// together) or `"stopped": true` (not decided).
 pub fn plan_json(lattice: dissect_core::LatticeKind, figures: &[(&str, &Disassembly)]) -> String {
+    let entries: Vec<String> = figures
+        .iter()
+        .map(|(name, outcome)| figure_json(name, outcome))
+        .collect();
+    let figures = if entries.is_empty() {
+        String::new()
+    } else {
+        format!("\n{}", entries.join(",\n"))
+    };
+    format!(
+        "{{\n  \"format\": \"{PLAN_FORMAT}\",\n  \"lattice\": \"{}\",\n  \"figures\": [{figures}\n  ]\n}}\n",
+        lattice.name()
+    )
+}
+
+/// One figure's entry of the plan file, on its own lines (a move a line).
+fn figure_json(name: &str, outcome: &Disassembly) -> String {
     let list = |v: &[usize]| -> String {
         let items: Vec<String> = v.iter().map(usize::to_string).collect();
         format!("[{}]", items.join(", "))
     };
-    let mut out = format!(
-        "{{\n  \"format\": \"{PLAN_FORMAT}\",\n  \"lattice\": \"{}\",\n  \"figures\": [",
-        lattice.name()
-    );
-    for (f, (name, outcome)) in figures.iter().enumerate() {
-        let name = serde_json::to_string(name).unwrap_or_else(|_| "\"\"".into());
-        out += if f == 0 { "\n" } else { ",\n" };
-        match outcome {
-            Disassembly::Apart(plan) => {
-                out += &format!(
-                    "    {{\"name\": {name}, \"level\": {}, \"moves\": [",
-                    plan.level
-                );
-                for (i, m) in plan.moves.iter().enumerate() {
-                    out += if i == 0 { "\n" } else { ",\n" };
-                    out += &format!(
+    let name = serde_json::to_string(name).unwrap_or_else(|_| "\"\"".into());
+    match outcome {
+        Disassembly::Apart(plan) => {
+            let moves: Vec<String> = plan
+                .moves
+                .iter()
+                .map(|m| {
+                    format!(
                         "      {{\"pieces\": {}, \"by\": [{}, {}, {}], \"removed\": {}}}",
                         list(&m.pieces),
                         m.by[0],
                         m.by[1],
                         m.by[2],
                         m.removed
-                    );
-                }
-                out += if plan.moves.is_empty() {
-                    "]}"
-                } else {
-                    "\n    ]}"
-                };
-            }
-            Disassembly::Locked(locked) => {
-                out += &format!(
-                    "    {{\"name\": {name}, \"level\": null, \"moves\": [], \"locked\": {}}}",
-                    list(locked)
-                );
-            }
-            _ => {
-                out += &format!(
-                    "    {{\"name\": {name}, \"level\": null, \"moves\": [], \"stopped\": true}}"
-                );
-            }
+                    )
+                })
+                .collect();
+            let moves = if moves.is_empty() {
+                String::new()
+            } else {
+                format!("\n{}\n    ", moves.join(",\n"))
+            };
+            format!(
+                "    {{\"name\": {name}, \"level\": {}, \"moves\": [{moves}]}}",
+                plan.level
+            )
         }
+        Disassembly::Locked(locked) => format!(
+            "    {{\"name\": {name}, \"level\": null, \"moves\": [], \"locked\": {}}}",
+            list(locked)
+        ),
+        _ => format!("    {{\"name\": {name}, \"level\": null, \"moves\": [], \"stopped\": true}}"),
     }
-    out += "\n  ]\n}\n";
-    out
 }
 
 /// How far the assembled figure made of `pieces` is from interlocking. For
