@@ -270,20 +270,28 @@ impl<'r, 'a> Run<'r, 'a> {
                 } else {
                     &never
                 };
-                let Some(mut cand) =
+                let Some(cand) =
                     search.install(|| greedy::greedy_until(&search.problem, style, stop))
                 else {
                     break 'styles;
                 };
-                let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
-                debug_assert!(score.valid, "the greedy dissection is valid");
-                search.judge(&cand, &mut score);
-                if score.valid {
-                    let level = cand.k - 1;
-                    self.inc.improve(search, cand, score, level, 0, Via::Greedy);
-                }
+                self.offer_greedy(cand);
             }
         }
+    }
+
+    /// A constructive dissection (greedy or pilot, always valid) scored,
+    /// judged and offered to the incumbent; whether it improved.
+    fn offer_greedy(&mut self, mut cand: Candidate) -> bool {
+        let search = self.search;
+        let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
+        debug_assert!(score.valid, "a constructive dissection is valid");
+        search.judge(&cand, &mut score);
+        if !score.valid {
+            return false;
+        }
+        let level = cand.k - 1;
+        self.inc.improve(search, cand, score, level, 0, Via::Greedy)
     }
 
     /// The pilot method on the greedy ([`greedy::pilot_until`], connected
@@ -313,16 +321,11 @@ impl<'r, 'a> Run<'r, 'a> {
                 let found = search.install(|| {
                     greedy::pilot_until(&search.problem, style, width, PILOT_DEPTH, search.stop)
                 });
-                let Some((mut cand, more)) = found else {
+                let Some((cand, more)) = found else {
                     break 'styles;
                 };
                 truncated |= more;
-                let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
-                search.judge(&cand, &mut score);
-                if score.valid {
-                    let level = cand.k - 1;
-                    improved |= self.inc.improve(search, cand, score, level, 0, Via::Greedy);
-                }
+                improved |= self.offer_greedy(cand);
             }
         }
         self.pilot_width = if truncated { width * 2 } else { usize::MAX };
