@@ -51,6 +51,11 @@ echo "python: built and installed $(basename "$wheel") in $(($(date +%s) - start
 # wheel, not the source folder python/dissect (which has no extension).
 "$venv/bin/mypy" --config-file python/pyproject.toml python/examples python/tests
 export MPLBACKEND=Agg DISSECT_REQUIRE_RAY=1
+# The external oracle, when the project's shared folder is beside the
+# checkout (the tests skip it visibly otherwise).
+if [ -z "${DISSECT_VERIFY:-}" ] && [ -f ../shared/tools/verify.py ]; then
+  export DISSECT_VERIFY="$PWD/../shared/tools/verify.py"
+fi
 "$venv/bin/python" -m pytest -q -p no:cacheprovider python/tests
 "$venv/bin/python" python/examples/design_puzzle.py --out "$venv/example"
 test -s "$venv/example/puzzle.json"

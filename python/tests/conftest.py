@@ -1,7 +1,8 @@
 """Shared helpers: the repository's benchmark instances (instances/), the
 independent checkers (tools/check_solution.py of this repository, and the
-external ../shared/tools/verify.py when present) and the `dissect` binary for
-CLI comparisons."""
+external oracle verify.py when $DISSECT_VERIFY names it: CI's Python step
+sets it when the project's shared folder is beside the checkout) and the
+`dissect` binary for CLI comparisons."""
 
 import os
 import subprocess
@@ -17,8 +18,8 @@ import dissect
 REPO = Path(__file__).resolve().parents[2]
 INSTANCES = REPO / "instances"
 CHECK_SOLUTION = REPO / "tools" / "check_solution.py"
-VERIFY_PY = Path(os.environ.get("DISSECT_VERIFY",
-                                REPO.parent / "shared" / "tools" / "verify.py"))
+_VERIFY = os.environ.get("DISSECT_VERIFY")
+VERIFY_PY = Path(_VERIFY) if _VERIFY else None
 _skipped: List[bool] = []
 
 
@@ -52,12 +53,13 @@ def check_with_verify_py(
     sol = tmp_path / "solution.json"
     dissection.to_json(sol)
     last = _run_checker(CHECK_SOLUTION, dissection, sol, files)
-    if VERIFY_PY.is_file():
+    if VERIFY_PY is not None and VERIFY_PY.is_file():
         _run_checker(VERIFY_PY, dissection, sol, files)
     elif not _skipped:
         _skipped.append(True)
         # A warning, so that pytest's summary shows it once.
-        warnings.warn(f"{VERIFY_PY} not found: the external oracle's checks are skipped")
+        why = f"{VERIFY_PY} not found" if VERIFY_PY else "DISSECT_VERIFY is not set"
+        warnings.warn(f"{why}: the external oracle's checks are skipped")
     return last
 
 
