@@ -76,7 +76,8 @@ def solve_many(
     for ``threads`` CPUs and runs the solver with that many threads
     (default 1: one problem per core). With ``return_exceptions=True`` a
     problem that fails (``NoDissectionFound``, ``ProblemError``, ...) gets
-    its exception in the list; otherwise the first failure is raised.
+    its exception in the list; otherwise the first failure is raised (the
+    other tasks still run to their end).
     """
     options.setdefault("threads", 1)
     refs = []
@@ -92,8 +93,9 @@ def solve_many(
         except ray.exceptions.RayTaskError as e:
             cause: Exception = e.as_instanceof_cause()  # type: ignore[no-untyped-call]
             if not return_exceptions:
-                for r in refs:
-                    ray.cancel(r)
+                # The other tasks are left to finish: cancelling a task as it
+                # completes crashes the driver in Ray 2.60 ("Tried to complete
+                # task that was not pending"), and each task ends by itself.
                 raise cause from None
             out.append(cause)
     return out
