@@ -348,7 +348,8 @@ impl<'r, 'a> Run<'r, 'a> {
 
     /// The pilot method on the greedy ([`greedy::pilot_until`]) at the
     /// current width, which then doubles: the constructive step's pilot
-    /// choice, then the connected choice when that was a tidy one; every
+    /// choice, then (past the first width) the connected choice when that
+    /// was a tidy one; every
     /// figure as the pivot, both ways of keeping components; each one with fewer
     /// pieces is an improvement. Whether one was; `false` once the width
     /// is past [`PILOT_MAX_WIDTH`] or a pilot took every motion a step
@@ -361,8 +362,9 @@ impl<'r, 'a> Run<'r, 'a> {
         }
         let mut improved = false;
         let mut truncated = false;
+        // The first pilot (before the sectors) runs one choice only.
         let mut choices = vec![self.pilot_choice];
-        if self.pilot_choice != greedy::Choice::Connected {
+        if self.pilot_choice != greedy::Choice::Connected && width > PILOT_WIDTH {
             choices.push(greedy::Choice::Connected);
         }
         let styles = choices
