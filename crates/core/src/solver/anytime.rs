@@ -36,6 +36,10 @@ const PILOT_EAGER_WIDTH: usize = 32;
 /// largest pieces).
 const PILOT_DEPTH: usize = 8;
 
+/// Constructive dissections tied with the best that regrouping also
+/// tries ([`Run::regroup`]).
+const TIES: usize = 4;
+
 /// Attempts (fresh streams) at one descent step while it ends near misses.
 const DESCENT_ATTEMPTS: usize = 4;
 
@@ -207,6 +211,12 @@ struct Run<'r, 'a> {
     inc: Incumbent,
     /// The width of the next pilot ([`Run::pilot`]).
     pilot_width: usize,
+    /// How the pilot's greedy chooses motions (set by
+    /// [`Run::constructive`]).
+    pilot_choice: greedy::Choice,
+    /// Constructive dissections with as many pieces as the best (the
+    /// last [`TIES`]: the widest pilots'), for [`Run::regroup`].
+    ties: Vec<Candidate>,
 }
 
 impl<'r, 'a> Run<'r, 'a> {
@@ -238,20 +248,32 @@ impl<'r, 'a> Run<'r, 'a> {
             below: usize::from(!anytime.plateau),
             inc: Incumbent::new(outcome, max_pieces),
             pilot_width: PILOT_WIDTH,
+            pilot_choice: greedy::Choice::Connected,
+            ties: Vec::new(),
         }
     }
 
     /// The constructive dissection: every figure as the pivot, two ways of
-    /// choosing motions and two of keeping components; each one with fewer
-    /// pieces is an improvement.
+    /// choosing motions and two of keeping components (on large figures
+    /// also the tidy choices, [`greedy::TIDY_SLACKS`]); each one with fewer
+    /// pieces is an improvement. The pilot's choice is then the tidy or
+    /// connected choice whose greedy had the fewest pieces.
     fn constructive(&mut self) {
         let search = self.search;
-        let choices = [
+        let mut choices = vec![
             (greedy::Choice::Overlap, 2),
             (greedy::Choice::Overlap, 1),
             (greedy::Choice::Connected, 2),
             (greedy::Choice::Connected, 1),
         ];
+        if search.figures[0].len() >= coarse::MIN_CELLS {
+            for slack in greedy::TIDY_SLACKS {
+                let choice = greedy::Choice::Tidy { slack };
+                choices.extend([(choice, 2), (choice, 1)]);
+            }
+        }
+        // The fewest pieces of each choice, for the pilot's.
+        let mut fewest: Vec<(greedy::Choice, usize)> = Vec::new();
         'styles: for (choice, divisor) in choices {
             for pivot in 0..search.figures.len() {
                 if search.stopped() {
@@ -275,9 +297,27 @@ impl<'r, 'a> Run<'r, 'a> {
                 else {
                     break 'styles;
                 };
+                match fewest.iter_mut().find(|(c, _)| *c == choice) {
+                    Some(entry) => entry.1 = entry.1.min(cand.k),
+                    None => fewest.push((choice, cand.k)),
+                }
                 self.offer_greedy(cand);
             }
         }
+        // Tidy first on ties (in the order of TIDY_SLACKS), then connected.
+        let mut best = (usize::MAX, greedy::Choice::Connected);
+        let tidy = fewest
+            .iter()
+            .filter(|(c, _)| matches!(c, greedy::Choice::Tidy { .. }));
+        let connected = fewest
+            .iter()
+            .filter(|(c, _)| *c == greedy::Choice::Connected);
+        for &(choice, k) in tidy.chain(connected) {
+            if k < best.0 {
+                best = (k, choice);
+            }
+        }
+        self.pilot_choice = best.1;
     }
 
     /// A constructive dissection (greedy or pilot, always valid) scored,
@@ -291,12 +331,26 @@ impl<'r, 'a> Run<'r, 'a> {
             return false;
         }
         let level = cand.k - 1;
-        self.inc.improve(search, cand, score, level, 0, Via::Greedy)
+        let best = self.inc.pieces();
+        if best == Some(cand.k) {
+            if self.ties.len() == TIES {
+                self.ties.remove(0);
+            }
+            self.ties.push(cand);
+            return false;
+        }
+        let improved = self.inc.improve(search, cand, score, level, 0, Via::Greedy);
+        if improved {
+            self.ties.clear();
+        }
+        improved
     }
 
-    /// The pilot method on the greedy ([`greedy::pilot_until`], connected
-    /// choice) at the current width, which then doubles: every figure as
-    /// the pivot, both ways of keeping components; each one with fewer
+    /// The pilot method on the greedy ([`greedy::pilot_until`]) at the
+    /// current width, which then doubles: the constructive step's pilot
+    /// choice, then (past the first width) the connected choice when that
+    /// was a tidy one; every
+    /// figure as the pivot, both ways of keeping components; each one with fewer
     /// pieces is an improvement. Whether one was; `false` once the width
     /// is past [`PILOT_MAX_WIDTH`] or a pilot took every motion a step
     /// ranks (a wider one would repeat it). Stops with the run.
@@ -308,7 +362,15 @@ impl<'r, 'a> Run<'r, 'a> {
         }
         let mut improved = false;
         let mut truncated = false;
-        'styles: for divisor in [1, 2] {
+        // The first pilot (before the sectors) runs one choice only.
+        let mut choices = vec![self.pilot_choice];
+        if self.pilot_choice != greedy::Choice::Connected && width > PILOT_WIDTH {
+            choices.push(greedy::Choice::Connected);
+        }
+        let styles = choices
+            .into_iter()
+            .flat_map(|choice| [1, 2].map(|divisor| (choice, divisor)));
+        'styles: for (choice, divisor) in styles {
             for pivot in 0..search.figures.len() {
                 if search.stopped() {
                     break 'styles;
@@ -316,7 +378,7 @@ impl<'r, 'a> Run<'r, 'a> {
                 let style = greedy::GreedyStyle {
                     pivot,
                     divisor,
-                    choice: greedy::Choice::Connected,
+                    choice,
                 };
                 let found = search.install(|| {
                     greedy::pilot_until(&search.problem, style, width, PILOT_DEPTH, search.stop)
@@ -413,6 +475,31 @@ impl<'r, 'a> Run<'r, 'a> {
             let level = c.k - 1;
             if !self.inc.improve(search, c, s, level, 0, Via::Regroup) {
                 break;
+            }
+        }
+        // The constructive dissections that tied with the best: a group
+        // of one may merge where the best's do not.
+        for tie in std::mem::take(&mut self.ties) {
+            if search.stopped() {
+                break;
+            }
+            let found = regroup::regroup_once(
+                search.figures,
+                &search.problem,
+                &tie.labels,
+                tie.k,
+                repairer,
+                search.stop,
+                &mut Vec::new(),
+            );
+            let Some((c, s)) = found.and_then(|pieces| search.candidate_of(&pieces)) else {
+                continue;
+            };
+            let level = c.k - 1;
+            if self.inc.improve(search, c, s, level, 0, Via::Regroup) {
+                self.ties.clear();
+                self.regroup();
+                return;
             }
         }
     }

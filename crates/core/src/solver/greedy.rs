@@ -38,7 +38,21 @@ pub(crate) enum Choice {
     /// component (then the most cells): a large overlap in many small
     /// components makes many small pieces.
     Connected,
+    /// Among [`Choice::Connected`]'s candidates whose largest component
+    /// gives up at most `1 / slack` of the best one's cells, the one whose
+    /// cut leaves the fewest components in the remainder of the more
+    /// broken of the two figures (each component needs a piece of its
+    /// own), then in both, then the connected choice's order: the cut is
+    /// chosen for the remainder it leaves, not only for its own size.
+    Tidy {
+        /// The largest component may be `1 / slack` smaller than the best.
+        slack: usize,
+    },
 }
+
+/// The tidy choices the anytime search tries (slack 1/4 is the pilot's
+/// usual choice; BENCHMARKS, "3D: remainder-aware cuts").
+pub(crate) const TIDY_SLACKS: [usize; 3] = [4, 3, 6];
 
 /// Translations per symmetry class that [`Choice::Connected`] compares.
 const CANDIDATES: usize = 8;
@@ -85,7 +99,14 @@ pub(crate) fn pilot_until(
             break;
         }
         let cells = state.free_pivot_cells();
-        let motions = ranked_motions(problem, state.pivot, &cells, other, &state.labels[other]);
+        let motions = ranked_motions(
+            problem,
+            state.pivot,
+            &cells,
+            other,
+            &state.labels[other],
+            (style.choice, style.divisor),
+        );
         truncated |= motions.len() > width.max(1);
         let mut chosen: Option<(usize, State)> = None;
         for &m in motions.iter().take(width.max(1)) {
@@ -161,8 +182,13 @@ impl<'p> State<'p> {
     fn step(&mut self, forced: Option<(usize, (usize, Point))>) {
         let (problem, pivot) = (self.problem, self.pivot);
         let shapes = &problem.shapes;
-        let (common, motions) =
-            common_part_with(problem, pivot, &self.labels, self.style.choice, forced);
+        let (common, motions) = common_part_with(
+            problem,
+            pivot,
+            &self.labels,
+            (self.style.choice, self.style.divisor),
+            forced,
+        );
         debug_assert!(!common.is_empty(), "a single cell always fits");
         let comps = components(&shapes[pivot], &common);
         let largest = comps.iter().map(Vec::len).max().unwrap_or(0);
@@ -209,15 +235,16 @@ pub(crate) fn common_part_by(
     labels: &[Vec<u16>],
     choice: Choice,
 ) -> (Vec<u32>, Vec<Option<(usize, Point)>>) {
-    common_part_with(problem, pivot, labels, choice, None)
+    common_part_with(problem, pivot, labels, (choice, 1), None)
 }
 
-/// [`common_part_by`], figure `forced.0` moved by `forced.1` when given.
+/// [`common_part_by`] (with the style's divisor for [`Choice::Tidy`]),
+/// figure `forced.0` moved by `forced.1` when given.
 fn common_part_with(
     problem: &Problem,
     pivot: usize,
     labels: &[Vec<u16>],
-    choice: Choice,
+    choice: (Choice, usize),
     forced: Option<(usize, (usize, Point))>,
 ) -> (Vec<u32>, Vec<Option<(usize, Point)>>) {
     let shapes = &problem.shapes;
@@ -266,9 +293,9 @@ fn best_motion(
     cells: &[u32],
     to: usize,
     to_labels: &[u16],
-    choice: Choice,
+    choice: (Choice, usize),
 ) -> (usize, Point) {
-    match choice {
+    match choice.0 {
         Choice::Overlap => {
             let mut top = (0u32, 0usize, [0i32; 3]);
             for b in candidate_votes(problem, from, cells, to, to_labels, 1) {
@@ -278,32 +305,36 @@ fn best_motion(
             }
             (top.1, Point::from(top.2))
         }
-        Choice::Connected => ranked_motions(problem, from, cells, to, to_labels)
-            .first()
-            .copied()
-            .unwrap_or((0, Point::from([0, 0, 0]))),
+        Choice::Connected | Choice::Tidy { .. } => {
+            ranked_motions(problem, from, cells, to, to_labels, choice)
+                .first()
+                .copied()
+                .unwrap_or((0, Point::from([0, 0, 0])))
+        }
     }
 }
 
 /// The motions of [`Choice::Connected`]'s candidates, best first: the
 /// largest component of the common part, then the most cells, then the
-/// candidates' order.
+/// candidates' order. With [`Choice::Tidy`] (and the style's divisor), the
+/// candidates within its slack of the largest component come first, by
+/// the components their cut leaves ([`remainder_parts`]).
 fn ranked_motions(
     problem: &Problem,
     from: usize,
     cells: &[u32],
     to: usize,
     to_labels: &[u16],
+    choice: (Choice, usize),
 ) -> Vec<(usize, Point)> {
     use rayon::prelude::*;
     let src = &problem.shapes[from];
     let dst = &problem.shapes[to];
     let in_free = |p: Point| dst.lookup(p).is_some_and(|j| to_labels[j as usize] == FREE);
     let all = candidate_votes(problem, from, cells, to, to_labels, CANDIDATES);
-    let mut scored: Vec<((usize, usize), usize)> = all
+    let scored: Vec<(usize, usize)> = all
         .par_iter()
-        .enumerate()
-        .map(|(i, &(_, s, t))| {
+        .map(|&(_, s, t)| {
             let (sym, t) = (problem.geo.syms[s], Point::from(t));
             let common: Vec<u32> = cells
                 .iter()
@@ -311,14 +342,98 @@ fn ranked_motions(
                 .filter(|&c| in_free(sym.apply(src.point(c)) + t))
                 .collect();
             let largest = components(src, &common).iter().map(Vec::len).max();
-            ((largest.unwrap_or(0), common.len()), i)
+            (largest.unwrap_or(0), common.len())
         })
         .collect();
-    scored.sort_by_key(|&(score, i)| (std::cmp::Reverse(score), i));
-    scored
+    let best = scored.iter().map(|s| s.0).max().unwrap_or(0);
+    let floor = match choice.0 {
+        Choice::Tidy { slack } => best - best / slack.max(1),
+        _ => usize::MAX,
+    };
+    // The tidy key: 0 for the connected choice's order.
+    let tidy: Vec<(usize, usize)> = all
+        .par_iter()
+        .zip(&scored)
+        .map(|(&(_, s, t), &(largest, _))| {
+            if largest < floor || largest == 0 {
+                return (usize::MAX, usize::MAX);
+            }
+            let motion = (s, Point::from(t));
+            remainder_parts(problem, from, cells, to, to_labels, motion, choice.1)
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..all.len()).collect();
+    order.sort_by_key(|&i| (tidy[i], std::cmp::Reverse(scored[i]), i));
+    order
         .into_iter()
-        .map(|(_, i)| (all[i].1, Point::from(all[i].2)))
+        .map(|i| (all[i].1, Point::from(all[i].2)))
         .collect()
+}
+
+/// What the cut of `motion` (the common part's components of at least
+/// `largest / divisor` cells) leaves: the components of the remainder in
+/// the more broken of the two figures, then in both together.
+fn remainder_parts(
+    problem: &Problem,
+    from: usize,
+    cells: &[u32],
+    to: usize,
+    to_labels: &[u16],
+    motion: (usize, Point),
+    divisor: usize,
+) -> (usize, usize) {
+    let (src, dst) = (&problem.shapes[from], &problem.shapes[to]);
+    let sym = problem.geo.syms[motion.0];
+    let image = |c: u32| {
+        dst.lookup(sym.apply(src.point(c)) + motion.1)
+            .filter(|&j| to_labels[j as usize] == FREE)
+    };
+    let common: Vec<u32> = cells
+        .iter()
+        .copied()
+        .filter(|&c| image(c).is_some())
+        .collect();
+    let comps = components(src, &common);
+    let largest = comps.iter().map(Vec::len).max().unwrap_or(0);
+    let keep = (largest / divisor.max(1)).max(1);
+    let mut left_src = vec![false; src.len()];
+    for &c in cells {
+        left_src[c as usize] = true;
+    }
+    let mut left_dst: Vec<bool> = to_labels.iter().map(|&l| l == FREE).collect();
+    for comp in comps.iter().filter(|c| c.len() >= keep) {
+        for &c in comp {
+            left_src[c as usize] = false;
+            if let Some(j) = image(c) {
+                left_dst[j as usize] = false;
+            }
+        }
+    }
+    let (a, b) = (count_parts(src, left_src), count_parts(dst, left_dst));
+    (a.max(b), a + b)
+}
+
+/// The connected components of the cells marked in `inside` (cleared).
+fn count_parts(shape: &Shape, mut inside: Vec<bool>) -> usize {
+    let mut count = 0;
+    let mut stack = Vec::new();
+    for c in 0..inside.len() {
+        if !inside[c] {
+            continue;
+        }
+        count += 1;
+        inside[c] = false;
+        stack.push(c as u32);
+        while let Some(x) = stack.pop() {
+            for &nb in shape.neighbors(x) {
+                if inside[nb as usize] {
+                    inside[nb as usize] = false;
+                    stack.push(nb);
+                }
+            }
+        }
+    }
+    count
 }
 
 /// The best `take` translations by votes of every class of symmetries

@@ -36,7 +36,12 @@ fn the_constructive_dissection_is_always_valid() {
         let (figs, problem, _) = candidate(*lattice, true, figures);
         for pivot in 0..figs.len() {
             for divisor in [1, 2] {
-                for choice in [Choice::Overlap, Choice::Connected] {
+                for choice in [
+                    Choice::Overlap,
+                    Choice::Connected,
+                    Choice::Tidy { slack: 4 },
+                    Choice::Tidy { slack: 1 },
+                ] {
                     let style = GreedyStyle {
                         pivot,
                         divisor,
@@ -116,6 +121,75 @@ fn the_connected_choice_keeps_the_largest_component() {
         };
         let (overlap, connected) = (largest(Choice::Overlap), largest(Choice::Connected));
         assert!(connected >= overlap, "{figures:?}: {connected} < {overlap}");
+    }
+}
+
+/// The tidy choice's first cut gives up at most `1 / slack` of the
+/// connected choice's largest component and leaves no more remainder
+/// components in the more broken figure (the connected choice's motion is
+/// one of its candidates); its greedy and pilot are valid. Voxel figures
+/// with a hole and a notch, both figures as the pivot.
+#[test]
+fn the_tidy_choice_leaves_no_more_remainder_parts() {
+    use crate::solver::greedy::{common_part_by, components, pilot_until, FREE};
+    let cases: &[&[&str]] = &[
+        &["AAA|A.A|AAA/A..|...|..A", "AAAAA|AAAAA"],
+        &["AAAA|A..A|AAAA/AA.A|AAAA|AAAA", "AAAAAAA|AAAAAAA|AAAAAAA"],
+        &["AAAAA|A...A|AAAAA/AA...|.....|...AA", "AAAAAAAA|AAAAAAAA"],
+    ];
+    for figures in cases {
+        let (figs, problem, _) = candidate(LatticeKind::Cubic, true, figures);
+        let labels: Vec<Vec<u16>> = problem.shapes.iter().map(|s| vec![FREE; s.len()]).collect();
+        // The largest component of the first cut and the components each
+        // figure has left after it (divisor 1: the largest components cut).
+        let cut = |choice| {
+            let (common, motions) = common_part_by(&problem, 0, &labels, choice);
+            let comps = components(&problem.shapes[0], &common);
+            let largest = comps.iter().map(Vec::len).max().unwrap_or(0);
+            let mut left = labels.clone();
+            for comp in comps.iter().filter(|c| c.len() == largest) {
+                for &c in comp {
+                    left[0][c as usize] = 0;
+                    let (s, t) = motions[1].expect("the other figure moves");
+                    let p = problem.geo.syms[s].apply(problem.shapes[0].point(c)) + t;
+                    let j = problem.shapes[1].lookup(p).expect("inside");
+                    left[1][j as usize] = 0;
+                }
+            }
+            let parts = (0..2).map(|f| {
+                let free: Vec<u32> = (0..left[f].len() as u32)
+                    .filter(|&c| left[f][c as usize] == FREE)
+                    .collect();
+                components(&problem.shapes[f], &free).len()
+            });
+            (largest, parts.max().unwrap_or(0))
+        };
+        let (connected, connected_parts) = cut(Choice::Connected);
+        for slack in [1, 2, 4] {
+            let choice = Choice::Tidy { slack };
+            let (tidy, tidy_parts) = cut(choice);
+            assert!(
+                tidy >= connected - connected / slack,
+                "{figures:?} slack {slack}: {tidy} of {connected}"
+            );
+            assert!(
+                tidy_parts <= connected_parts,
+                "{figures:?} slack {slack}: {tidy_parts} > {connected_parts}"
+            );
+            for pivot in 0..2 {
+                let style = GreedyStyle {
+                    pivot,
+                    divisor: 1,
+                    choice,
+                };
+                let plain = greedy(&problem, style);
+                assert!(verified(LatticeKind::Cubic, true, &figs, &plain));
+                let (pilot, _) =
+                    pilot_until(&problem, style, 4, 4, &AtomicBool::new(false)).unwrap();
+                assert!(verified(LatticeKind::Cubic, true, &figs, &pilot));
+                assert!(pilot.k <= plain.k, "{figures:?} {style:?}");
+            }
+        }
     }
 }
 
