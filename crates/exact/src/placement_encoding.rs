@@ -46,6 +46,11 @@ pub(crate) struct Encoding {
     pub motion: Vec<Vec<Vec<(i32, Motion)>>>,
     /// The shift variables of [`MotionEncoding::Shifts`].
     pub shift_vars: usize,
+    /// The literals of one at-least-one clause of the formula, to split it
+    /// into cubes (`cube_and_conquer`): piece 0's motions into shape 1
+    /// (direct encoding) when it has two or more, else "this cell of shape
+    /// 0 is in some piece" for a cell that no piece is anchored at.
+    pub cube: Vec<i32>,
 }
 
 /// How the motion of each piece into each other figure is encoded.
@@ -293,13 +298,33 @@ pub(crate) fn encode(
         )?);
     }
     anchor.truncate(k);
+    let cube = cube_clause(&cell, &motion, &anchor);
     Some(Encoding {
         k,
         anchors: anchor,
         cell,
         motion,
         shift_vars,
+        cube,
     })
+}
+
+/// The literals of [`Encoding::cube`]: each is a clause of the formula
+/// (`motions_of_shape`'s at-least-one motion, `one_piece_per_cell`'s
+/// at-least-one piece).
+fn cube_clause(cell: &[Vec<Vec<i32>>], motion: &[Vec<Vec<(i32, Motion)>>], anchor: &[usize]) -> Vec<i32> {
+    if let Some(first) = motion.get(1).and_then(|m| m.first()) {
+        if first.len() >= 2 {
+            return first.iter().map(|(v, _)| *v).collect();
+        }
+    }
+    let n = cell[0].first().map_or(0, Vec::len);
+    // The middle cell, or the next one no piece is anchored at.
+    let c = (0..n)
+        .map(|i| (n / 2 + i) % n.max(1))
+        .find(|c| !anchor.contains(c))
+        .unwrap_or(0);
+    cell[0].iter().map(|piece| piece[c]).collect()
 }
 
 /// Exactly one piece per cell (`cell[f][i][c]`: cell `c` of shape `f` is
