@@ -115,6 +115,17 @@ impl ExactObserver for Lines {
                     "none (this proves nothing)"
                 }
             ),
+            ExactEvent::Cube {
+                pieces,
+                index,
+                of,
+                refuted,
+                seconds,
+            } => eprintln!(
+                "[exact {t:6.1} s] {pieces} pieces: cube {}/{of} {} in {seconds:.1} s",
+                index + 1,
+                if *refuted { "refuted" } else { "not refuted" }
+            ),
             ExactEvent::Found { pieces, .. } => {
                 eprintln!("[exact {t:6.1} s] SAT found a connected {pieces}-piece dissection")
             }

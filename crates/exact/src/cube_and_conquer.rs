@@ -36,7 +36,7 @@ use crate::certificate::{Certificate, CubeProof};
 use crate::incompatible_clique::Incompatibility;
 use crate::placement_encoding::{encode, MotionEncoding};
 use crate::sat_backend::Sat;
-use crate::search::{Connected, Cutting, Pass};
+use crate::search::{Connected, Cutting, ExactEvent, Pass};
 use crate::MotionSet;
 
 /// Cubes per thread: enough for the threads to share the work evenly,
@@ -114,7 +114,15 @@ impl Cubes<'_> {
                     if j >= cube.len() || abort.load(Ordering::SeqCst) {
                         break;
                     }
+                    let began = Instant::now();
                     let (answer, spent) = self.one(k, cube[j], base.1, &abort, deadline);
+                    self.cutting.observer.on_event(&ExactEvent::Cube {
+                        pieces: k,
+                        index: j,
+                        of: cube.len(),
+                        refuted: matches!(answer, Answer::Unsat(..)),
+                        seconds: began.elapsed().as_secs_f64(),
+                    });
                     conflicts.fetch_add(spent as usize, Ordering::SeqCst);
                     let stop_all = !matches!(answer, Answer::Unsat(..));
                     answers.lock().unwrap_or_else(|e| e.into_inner())[j] = Some(answer);

@@ -87,6 +87,12 @@ pub struct ExactOptions {
     /// at-least-one clauses (`Encoding::cube`), the cubes solved in
     /// parallel; UNSAT once every cube is. Not used under constraints.
     pub cube_threads: usize,
+    /// Break the symmetries of the reference figure too: the first piece's
+    /// motion into the second figure is taken as one per orbit under the
+    /// reference figure's symmetries that fix the anchored cells and the
+    /// second figure's symmetries (direct encoding; docs/FORMAT.md
+    /// "Certificates" for why that is sound). Never under constraints.
+    pub source_symmetries: bool,
 }
 
 /// The default of [`ExactOptions::max_encoding_bytes`]: 512 MiB.
@@ -132,6 +138,7 @@ impl Default for ExactOptions {
             motion_encoding: MotionEncoding::Auto,
             sat_max_cells: crate::bound::FULL_GRAPH_MAX_CELLS,
             cube_threads: 1,
+            source_symmetries: true,
         }
     }
 }
@@ -191,6 +198,20 @@ pub enum ExactEvent {
     /// just before the [`ExactEvent::Refuted`] it proves, or alone for the
     /// cheap bound's `L - 1`.
     Certified(Certificate),
+    /// Cube-and-conquer ([`ExactOptions::cube_threads`]): a cube was
+    /// settled (refuted, or not: a model, a stop or the deadline).
+    Cube {
+        /// K.
+        pieces: usize,
+        /// The cube (from 0).
+        index: usize,
+        /// The number of cubes.
+        of: usize,
+        /// Whether it was refuted.
+        refuted: bool,
+        /// Seconds it took.
+        seconds: f64,
+    },
     /// A verified dissection into `pieces` pieces.
     Found {
         /// Its piece count.
@@ -601,6 +622,7 @@ pub fn search(
     if let Some(c) = &options.constraints {
         inst.target_symmetries = !crate::constraint_encoding::needs_all_target_motions(c);
     }
+    inst.source_symmetries = options.source_symmetries && options.constraints.is_none();
     let ctx = Context {
         inst: &inst,
         clique: &clique,
@@ -801,8 +823,9 @@ pub fn dimacs_within(
         return Err(e);
     }
     let mut cheap = cheap(figures, mirror, &|| false)?;
-    let (inst, clique, incompat) =
+    let (mut inst, clique, incompat) =
         model_inputs(figures, mirror, &mut cheap).expect("not interrupted");
+    inst.source_symmetries = true;
     let all = (MotionSet::All, MotionEncoding::Auto);
     if let Some(e) = too_large(estimate(&inst, k, all, &clique, &incompat, &|| false)) {
         return Err(e);
