@@ -214,7 +214,8 @@ impl Cubes<'_> {
         abort: &AtomicBool,
         deadline: Option<Instant>,
     ) -> (Answer, u64) {
-        let interrupted = || abort.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
+        let interrupted =
+            || abort.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
         let mut sat = Sat::new(abort, Some((self.upper, k)));
         if self.certify {
             sat.record();
@@ -235,16 +236,17 @@ impl Cubes<'_> {
         add_groups(&mut sat, &enc.cube, self.threads * CUBES_PER_THREAD);
         debug_assert_eq!(sat.clauses(), base_clauses, "encode is deterministic");
         sat.add(&[literal]);
-        let answer = self.cutting.solve(&mut sat, &enc, k, deadline, &interrupted);
+        let answer = self
+            .cutting
+            .solve(&mut sat, &enc, k, deadline, &interrupted);
         let spent = sat.conflicts();
         let answer = match answer {
             Connected::Unknown => Answer::Unknown,
             Connected::Found(p) => Answer::Found(p),
             Connected::Unsat { cuts, connected } => {
                 let proof = if self.certify {
-                    sat.dimacs_from(base_clauses)
-                        .zip(sat.proof())
-                        .map(|((formula, clauses), proof)| CubeProof {
+                    sat.dimacs_from(base_clauses).zip(sat.proof()).map(
+                        |((formula, clauses), proof)| CubeProof {
                             literal,
                             formula,
                             clauses,
@@ -252,7 +254,8 @@ impl Cubes<'_> {
                             vars: sat.vars(),
                             cuts,
                             connectivity: connected,
-                        })
+                        },
+                    )
                 } else {
                     None
                 };

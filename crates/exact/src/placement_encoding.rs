@@ -312,7 +312,11 @@ pub(crate) fn encode(
 /// The literals of [`Encoding::cube`]: each is a clause of the formula
 /// (`motions_of_shape`'s at-least-one motion, `one_piece_per_cell`'s
 /// at-least-one piece).
-fn cube_clause(cell: &[Vec<Vec<i32>>], motion: &[Vec<Vec<(i32, Motion)>>], anchor: &[usize]) -> Vec<i32> {
+fn cube_clause(
+    cell: &[Vec<Vec<i32>>],
+    motion: &[Vec<Vec<(i32, Motion)>>],
+    anchor: &[usize],
+) -> Vec<i32> {
     if let Some(first) = motion.get(1).and_then(|m| m.first()) {
         if first.len() >= 2 {
             return first.iter().map(|(v, _)| *v).collect();
@@ -518,7 +522,12 @@ fn cell_maps(inst: &Instance, f: usize, set: MotionSet) -> Vec<(usize, Vec<usize
         .filter(|&h| set.admits(h, inst.syms[h].determinant()))
         .map(|h| {
             let g = &inst.syms[h];
-            let low = s.points.iter().map(|p| g.apply(*p)).min().expect("non-empty");
+            let low = s
+                .points
+                .iter()
+                .map(|p| g.apply(*p))
+                .min()
+                .expect("non-empty");
             let t = min - low;
             let map = s
                 .points
@@ -602,8 +611,8 @@ fn motions_of_shape(
     let shapes = &inst.shapes;
     let all = motions_into(inst, f, set, interrupted)?;
     let (_, reps) = piece_symmetries(inst, f, set);
-    let orbits = (f == 1 && inst.source_symmetries)
-        .then(|| orbit_representatives(inst, set, anchor, &all));
+    let orbits =
+        (f == 1 && inst.source_symmetries).then(|| orbit_representatives(inst, set, anchor, &all));
     let target = &shapes[f];
     let mut per_piece = Vec::with_capacity(cell[0].len());
     for (i, (from, into)) in cell[0].iter().zip(&cell[f]).enumerate() {
