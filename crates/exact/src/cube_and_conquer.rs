@@ -28,7 +28,7 @@
 //! base plus them; `dissect-proof` checks that `C` is a clause of the base
 //! and that every literal has its cube.
 
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
@@ -90,51 +90,52 @@ impl Cubes<'_> {
     /// Solves the cubes `cube` (the cover [`add_groups`] returned for the
     /// encoding of `k` pieces; the base formula with the groups was
     /// `base`: its DIMACS text when recording, and its clause count) on
-    /// [`Cubes::threads`] threads. Returns the pass and the conflicts
+    /// [`Cubes::threads`] threads, each cube until the deadline or
+    /// `conflicts_each` conflicts. Returns the pass and the conflicts
     /// spent.
     pub(crate) fn pass(
         &self,
         k: usize,
         cube: &[i32],
         base: (Option<String>, usize),
-        deadline: Option<Instant>,
+        (deadline, conflicts_each): (Option<Instant>, Option<u64>),
         start: Instant,
     ) -> (Pass, u64) {
         let next = AtomicUsize::new(0);
         let abort = AtomicBool::new(false);
-        let done = AtomicUsize::new(0);
         let answers: Mutex<Vec<Option<Answer>>> =
             Mutex::new((0..cube.len()).map(|_| None).collect());
-        let conflicts = AtomicUsize::new(0);
-        let threads = self.threads.clamp(1, cube.len().max(1));
+        let spent_all = AtomicU64::new(0);
+        if cube.is_empty() {
+            return (Pass::Unknown, 0);
+        }
+        let threads = self.threads.clamp(1, cube.len());
+        // Workers that have ended, counted even when one panics (the
+        // monitor below must not wait for it).
+        let ended = AtomicUsize::new(0);
+        struct Ended<'a>(&'a AtomicUsize);
+        impl Drop for Ended<'_> {
+            fn drop(&mut self) {
+                self.0.fetch_add(1, Ordering::SeqCst);
+            }
+        }
         std::thread::scope(|scope| {
             for _ in 0..threads {
-                scope.spawn(|| loop {
-                    let j = next.fetch_add(1, Ordering::SeqCst);
-                    if j >= cube.len() || abort.load(Ordering::SeqCst) {
-                        break;
-                    }
-                    let began = Instant::now();
-                    let (answer, spent) = self.one(k, cube[j], base.1, &abort, deadline);
-                    self.cutting.observer.on_event(&ExactEvent::Cube {
-                        pieces: k,
-                        index: j,
-                        of: cube.len(),
-                        refuted: matches!(answer, Answer::Unsat(..)),
-                        seconds: began.elapsed().as_secs_f64(),
-                    });
-                    conflicts.fetch_add(spent as usize, Ordering::SeqCst);
-                    let stop_all = !matches!(answer, Answer::Unsat(..));
-                    answers.lock().unwrap_or_else(|e| e.into_inner())[j] = Some(answer);
-                    if stop_all {
-                        abort.store(true, Ordering::SeqCst);
-                    }
-                    done.fetch_add(1, Ordering::SeqCst);
+                scope.spawn(|| {
+                    let _ended = Ended(&ended);
+                    self.work(
+                        k,
+                        cube,
+                        (base.1, conflicts_each),
+                        (&next, &abort),
+                        deadline,
+                        (&answers, &spent_all),
+                    );
                 });
             }
             // The caller's stop flag ends the cubes too.
             scope.spawn(|| {
-                while done.load(Ordering::SeqCst) < cube.len() && !abort.load(Ordering::SeqCst) {
+                while ended.load(Ordering::SeqCst) < threads {
                     if self.stop.load(Ordering::Relaxed) {
                         abort.store(true, Ordering::SeqCst);
                     }
@@ -143,8 +144,42 @@ impl Cubes<'_> {
             });
         });
         let answers = answers.into_inner().unwrap_or_else(|e| e.into_inner());
-        let spent = conflicts.load(Ordering::SeqCst) as u64;
+        let spent = spent_all.load(Ordering::SeqCst);
         (self.gather(k, cube, answers, base.0, start), spent)
+    }
+
+    /// One worker: takes the next cube until none is left or `abort`
+    /// rises, and files each answer.
+    fn work(
+        &self,
+        k: usize,
+        cube: &[i32],
+        (base_clauses, conflicts): (usize, Option<u64>),
+        (next, abort): (&AtomicUsize, &AtomicBool),
+        deadline: Option<Instant>,
+        (answers, spent_all): (&Mutex<Vec<Option<Answer>>>, &AtomicU64),
+    ) {
+        loop {
+            let j = next.fetch_add(1, Ordering::SeqCst);
+            if j >= cube.len() || abort.load(Ordering::SeqCst) {
+                break;
+            }
+            let began = Instant::now();
+            let (answer, spent) = self.one(k, cube[j], (base_clauses, conflicts), abort, deadline);
+            self.cutting.observer.on_event(&ExactEvent::Cube {
+                pieces: k,
+                index: j,
+                of: cube.len(),
+                refuted: matches!(answer, Answer::Unsat(..)),
+                seconds: began.elapsed().as_secs_f64(),
+            });
+            spent_all.fetch_add(spent, Ordering::SeqCst);
+            let stop_all = !matches!(answer, Answer::Unsat(..));
+            answers.lock().unwrap_or_else(|e| e.into_inner())[j] = Some(answer);
+            if stop_all {
+                abort.store(true, Ordering::SeqCst);
+            }
+        }
     }
 
     /// The pass the cubes' answers make.
@@ -210,13 +245,14 @@ impl Cubes<'_> {
         &self,
         k: usize,
         literal: i32,
-        base_clauses: usize,
+        (base_clauses, conflicts): (usize, Option<u64>),
         abort: &AtomicBool,
         deadline: Option<Instant>,
     ) -> (Answer, u64) {
         let interrupted =
             || abort.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
         let mut sat = Sat::new(abort, Some((self.upper, k)));
+        sat.set_conflict_limit(conflicts);
         if self.certify {
             sat.record();
             sat.record_proof();

@@ -85,7 +85,9 @@ pub struct ExactOptions {
     /// Threads for cube-and-conquer on the full model (1: none): "at most
     /// K pieces" is split into one cube per literal of one of its
     /// at-least-one clauses (`Encoding::cube`), the cubes solved in
-    /// parallel; UNSAT once every cube is. Not used under constraints.
+    /// parallel; UNSAT once every cube is. Each cube may spend what is
+    /// left of [`ExactOptions::conflict_budget`] (so a pass may spend up to
+    /// that many per cube). Not used under constraints.
     pub cube_threads: usize,
     /// Break the symmetries of the reference figure too: the first piece's
     /// motion into the second figure is taken as one per orbit under the
@@ -466,7 +468,13 @@ impl Context<'_> {
             let base = sat.dimacs().map(|(text, _)| text);
             let base_clauses = sat.clauses();
             drop(sat);
-            let (pass, conflicts) = cubes.pass(k, &cover, (base, base_clauses), deadline, start);
+            let (pass, conflicts) = cubes.pass(
+                k,
+                &cover,
+                (base, base_clauses),
+                (deadline, conflicts),
+                start,
+            );
             self.spent.set(self.spent.get() + conflicts);
             return pass;
         }

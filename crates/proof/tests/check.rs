@@ -245,7 +245,13 @@ fn cubes_cover_the_base_and_each_is_refuted() {
     assert_eq!(check_cubes(&base, &cover, &ok).unwrap().len(), 2);
     assert!(matches!(
         check_cubes(&base, &cover, &ok[..1]),
-        Err((None, ProofError::MissingCube { cubes: 1, literals: 2 }))
+        Err((
+            None,
+            ProofError::MissingCube {
+                cubes: 1,
+                literals: 2
+            }
+        ))
     ));
     assert!(matches!(
         check_cubes(&base, &[1, 3], &ok),
