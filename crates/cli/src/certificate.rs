@@ -22,6 +22,8 @@ struct Entry {
     cuts: usize,
     connectivity: bool,
     clique_only: bool,
+    /// Cube-and-conquer: the number of cubes (0: one proof).
+    cubes: usize,
 }
 
 /// Writes the certificates of a run as they come.
@@ -70,7 +72,23 @@ impl Writer {
     fn write(&self, c: &Certificate, written: &mut BTreeMap<usize, Entry>) -> Result<()> {
         let k = c.pieces;
         write_atomic(&self.dir.join(format!("k{k}.cnf")), c.formula.as_bytes())?;
-        write_atomic(&self.dir.join(format!("k{k}.drat")), c.proof.as_bytes())?;
+        // A stale file of the other kind would be read beside this one.
+        let stale = if c.cubes.is_empty() {
+            format!("k{k}.cubes")
+        } else {
+            format!("k{k}.drat")
+        };
+        match std::fs::remove_file(self.dir.join(&stale)) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                return Err(e).with_context(|| format!("cannot remove {stale}"))
+            }
+            _ => {}
+        }
+        if c.cubes.is_empty() {
+            write_atomic(&self.dir.join(format!("k{k}.drat")), c.proof.as_bytes())?;
+        } else {
+            self.write_cubes(c)?;
+        }
         written.insert(
             k,
             Entry {
@@ -80,9 +98,36 @@ impl Writer {
                 cuts: c.cuts,
                 connectivity: c.connectivity,
                 clique_only: c.clique_only,
+                cubes: c.cubes.len(),
             },
         );
         write_atomic(&self.dir.join("README.txt"), self.readme(written))
+    }
+
+    /// A cubed certificate's cover `kK.cubes` and its cubes
+    /// `kK.cube{j}.cnf`, `kK.cube{j}.drat`.
+    fn write_cubes(&self, c: &Certificate) -> Result<()> {
+        let k = c.pieces;
+        let mut cover = format!(
+            "c the cubes of k{k}.cnf: their literals, in order, are a clause of it;\n\
+             c cube j (from 0) is k{k}.cube{{j}}.cnf (clauses added to k{k}.cnf, its unit first)\n\
+             c refuted by k{k}.cube{{j}}.drat\n"
+        );
+        for cube in &c.cubes {
+            cover.push_str(&format!("{} ", cube.literal));
+        }
+        cover.push_str("0\n");
+        for (j, cube) in c.cubes.iter().enumerate() {
+            write_atomic(
+                &self.dir.join(format!("k{k}.cube{j}.cnf")),
+                cube.formula.as_bytes(),
+            )?;
+            write_atomic(
+                &self.dir.join(format!("k{k}.cube{j}.drat")),
+                cube.proof.as_bytes(),
+            )?;
+        }
+        write_atomic(&self.dir.join(format!("k{k}.cubes")), cover.as_bytes())
     }
 
     fn readme(&self, written: &BTreeMap<usize, Entry>) -> String {
@@ -112,6 +157,22 @@ impl Writer {
                 ));
                 continue;
             }
+            if e.cubes > 0 {
+                s.push_str(&format!(
+                    "k{k}.cnf, k{k}.cubes, k{k}.cube0..{}.cnf/.drat: no dissection into at most {k} \
+                     pieces by cube-and-conquer: k{k}.cubes is one clause of k{k}.cnf, each of its \
+                     {} literals a cube; k{k}.cube{{j}}.cnf adds to k{k}.cnf the unit of literal j (and the \
+                     connectivity encoding and cuts that cube met), k{k}.cube{{j}}.drat refutes the two \
+                     together. Every model of k{k}.cnf satisfies one literal, so no model exists \
+                     ({} clauses in k{k}.cnf, {} lemmas in all, {} cuts in all)\n",
+                    e.cubes - 1,
+                    e.cubes,
+                    e.clauses,
+                    e.lemmas,
+                    e.cuts
+                ));
+                continue;
+            }
             s.push_str(&format!(
                 "k{k}.cnf, k{k}.drat: no dissection into at most {k} pieces ({} variables, {} clauses, \
                  {} lemmas; connectivity encoding: {}; connectivity cuts: {})\n",
@@ -124,7 +185,9 @@ impl Writer {
         }
         s.push_str(
             "\nCheck them: `dissect check-proof DIR` (an independent checker, crate dissect-proof),\n\
-             or any DRAT checker (drat-trim kK.cnf kK.drat); any SAT solver must answer UNSAT on kK.cnf.\n",
+             or any DRAT checker (drat-trim kK.cnf kK.drat); any SAT solver must answer UNSAT on kK.cnf.\n\
+             For a cubed kK, the formula of cube j is kK.cnf's clauses with kK.cube{j}.cnf's (kK.cnf\n\
+             alone is the relaxation without connectivity); any SAT solver must answer UNSAT on each.\n",
         );
         s
     }
@@ -167,7 +230,8 @@ pub struct CheckProofArgs {
     pub dir: PathBuf,
 }
 
-/// The certificates in `dir`: `(K, formula, proof)`, by K.
+/// The certificates in `dir`: `(K, formula, proof or cover)`, by K; the
+/// third path ends in `.cubes` for a cube-and-conquer certificate.
 fn certificates(dir: &Path) -> Result<Vec<(usize, PathBuf, PathBuf)>> {
     let entries = std::fs::read_dir(dir)
         .map_err(|e| InputError(format!("{}: cannot read the folder: {e}", dir.display())))?;
@@ -181,10 +245,15 @@ fn certificates(dir: &Path) -> Result<Vec<(usize, PathBuf, PathBuf)>> {
         else {
             continue;
         };
-        let proof = dir.join(format!("k{k}.drat"));
+        let cover = dir.join(format!("k{k}.cubes"));
+        let proof = if cover.is_file() {
+            cover
+        } else {
+            dir.join(format!("k{k}.drat"))
+        };
         if !proof.is_file() {
             return Err(InputError(format!(
-                "{}: no proof beside {name} (k{k}.drat)",
+                "{}: no proof beside {name} (k{k}.drat or k{k}.cubes)",
                 dir.display()
             ))
             .into());
@@ -215,6 +284,12 @@ pub fn check(args: CheckProofArgs) -> Result<Status> {
     let mut failed = 0;
     let found = certificates(&args.dir)?;
     for (k, cnf_path, proof_path) in &found {
+        if proof_path.extension().is_some_and(|e| e == "cubes") {
+            if !check_cubed(*k, cnf_path, proof_path)? {
+                failed += 1;
+            }
+            continue;
+        }
         let cnf = dissect_proof::Cnf::parse(&read(cnf_path)?)
             .map_err(|e| located(e, cnf_path, proof_path))?;
         let proof = dissect_proof::Proof::parse(&read(proof_path)?)
@@ -245,6 +320,57 @@ pub fn check(args: CheckProofArgs) -> Result<Status> {
     Ok(Status::Ok)
 }
 
+/// Checks a cube-and-conquer certificate `kK.cnf`, `kK.cubes`,
+/// `kK.cube{j}.cnf`/`.drat` (the cubes read until the first missing one;
+/// the checker then says how many are missing). `Ok(false)`: it failed
+/// (printed).
+fn check_cubed(k: usize, cnf_path: &Path, cover_path: &Path) -> Result<bool> {
+    let dir = cnf_path.parent().unwrap_or(Path::new("."));
+    let base = dissect_proof::Cnf::parse(&read(cnf_path)?)
+        .map_err(|e| located(e, cnf_path, cover_path))?;
+    let cover = dissect_proof::parse_cover(&read(cover_path)?)
+        .map_err(|e| InputError(format!("{}: {e}", cover_path.display())))?;
+    let mut cubes = Vec::new();
+    for j in 0.. {
+        let (c, p) = (
+            dir.join(format!("k{k}.cube{j}.cnf")),
+            dir.join(format!("k{k}.cube{j}.drat")),
+        );
+        if !c.is_file() || !p.is_file() {
+            break;
+        }
+        let cnf = dissect_proof::Cnf::parse(&read(&c)?).map_err(|e| located(e, &c, &p))?;
+        let proof = dissect_proof::Proof::parse(&read(&p)?).map_err(|e| located(e, &c, &p))?;
+        cubes.push((cnf, proof));
+    }
+    match dissect_proof::check_cubes(&base, &cover, &cubes) {
+        Ok(v) => {
+            println!(
+                "k{k}: verified: no dissection into at most {k} pieces ({} clauses, {} cubes, {} lemmas, {} RAT, {} deletions)",
+                base.clauses().len(),
+                v.len(),
+                v.iter().map(|v| v.lemmas).sum::<usize>(),
+                v.iter().map(|v| v.rat_lemmas).sum::<usize>(),
+                v.iter().map(|v| v.deletions).sum::<usize>()
+            );
+            Ok(true)
+        }
+        Err((cube, e)) => {
+            let place = match cube {
+                None => cover_path.display().to_string(),
+                Some(j) => match e.location().0 {
+                    dissect_proof::Source::Proof => {
+                        dir.join(format!("k{k}.cube{j}.drat")).display().to_string()
+                    }
+                    _ => dir.join(format!("k{k}.cube{j}.cnf")).display().to_string(),
+                },
+            };
+            println!("k{k}: FAILED: {place}: {e}");
+            Ok(false)
+        }
+    }
+}
+
 fn plural(n: usize) -> String {
     if n == 1 {
         "1 certificate".into()
@@ -258,7 +384,7 @@ fn located(e: dissect_proof::ProofError, cnf: &Path, proof: &Path) -> InputError
     let (source, _) = e.location();
     let path = match source {
         dissect_proof::Source::Formula => cnf,
-        dissect_proof::Source::Proof => proof,
+        dissect_proof::Source::Proof | dissect_proof::Source::Cubes => proof,
     };
     InputError(format!("{}: {e}", path.display()))
 }

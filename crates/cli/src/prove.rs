@@ -40,6 +40,11 @@ pub struct BoundArgs {
     /// DIR/README.txt; check them with `dissect check-proof DIR`.
     #[arg(long, value_name = "DIR", conflicts_with = "dimacs")]
     pub certificate: Option<PathBuf>,
+    /// Cube-and-conquer on this many threads: each "at most K pieces?" is
+    /// split into cubes (the literals of one of its clauses) solved in
+    /// parallel; certificates then hold one proof per cube (1: no cubes).
+    #[arg(long, default_value_t = 1, value_parser = crate::args::thread_count)]
+    pub threads: usize,
     /// The figures (text files, see FORMAT.md).
     #[arg(required = true, num_args = 2.., value_name = "FIGURE")]
     pub figures: Vec<PathBuf>,
@@ -110,6 +115,17 @@ impl ExactObserver for Lines {
                     "none (this proves nothing)"
                 }
             ),
+            ExactEvent::Cube {
+                pieces,
+                index,
+                of,
+                refuted,
+                seconds,
+            } => eprintln!(
+                "[exact {t:6.1} s] {pieces} pieces: cube {}/{of} {} in {seconds:.1} s",
+                index + 1,
+                if *refuted { "refuted" } else { "not refuted" }
+            ),
             ExactEvent::Found { pieces, .. } => {
                 eprintln!("[exact {t:6.1} s] SAT found a connected {pieces}-piece dissection")
             }
@@ -143,6 +159,7 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         max_pieces: args.max_pieces,
         time_limit: args.time_limit.unwrap_or_default(),
         certify: args.certificate.is_some(),
+        threads: args.threads,
     };
     let names = names(&args.figures);
     let certificates = match &args.certificate {

@@ -142,3 +142,121 @@ fn a_formula_with_clauses_removed_fails_and_corruption_names_file_and_line() {
     let out = dissect(dir.path(), &["check-proof", "."]);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out));
 }
+
+/// `bound --threads 2`: cube-and-conquer writes kK.cnf (the base), kK.cubes
+/// (the cover) and one formula and proof per cube; `check-proof` verifies
+/// them, and fails (exit 1) when a cube is missing, when the base loses a
+/// clause, or when a cube's proof is emptied.
+#[test]
+fn cubed_certificates_verify_and_fail_without_a_cube_or_a_clause() {
+    let dir = setup();
+    let out = dissect(
+        dir.path(),
+        &[
+            "bound",
+            "-q",
+            "--threads",
+            "2",
+            "--max-pieces",
+            "2",
+            "--certificate",
+            "cert",
+            "a.txt",
+            "b.txt",
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out));
+    let cert = dir.path().join("cert");
+    let cover = std::fs::read_to_string(cert.join("k2.cubes")).expect("k2 cubed");
+    let cubes = cover
+        .lines()
+        .find(|l| !l.starts_with('c'))
+        .expect("the cover")
+        .split_whitespace()
+        .count()
+        - 1;
+    assert!(cubes >= 2, "{cover}");
+    assert!(cert.join(format!("k2.cube{}.drat", cubes - 1)).is_file());
+    assert!(!cert.join("k2.drat").exists());
+    let readme = std::fs::read_to_string(cert.join("README.txt")).unwrap();
+    assert!(readme.contains("by cube-and-conquer"), "{readme}");
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert!(out.status.success(), "{}", text(&out));
+    assert!(
+        text(&out).contains("k2: verified: no dissection into at most 2 pieces"),
+        "{}",
+        text(&out)
+    );
+    assert!(
+        text(&out).contains(&format!("{cubes} cubes")),
+        "{}",
+        text(&out)
+    );
+
+    // A cube missing.
+    let last = cert.join(format!("k2.cube{}.cnf", cubes - 1));
+    let kept = std::fs::read(&last).unwrap();
+    std::fs::remove_file(&last).unwrap();
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(text(&out).contains("k2: FAILED"), "{}", text(&out));
+    assert!(
+        text(&out).contains(&format!("{} cubes for the {cubes} literals", cubes - 1)),
+        "{}",
+        text(&out)
+    );
+    std::fs::write(&last, kept).unwrap();
+
+    // The base without the cover's clause.
+    let cnf = std::fs::read_to_string(cert.join("k2.cnf")).unwrap();
+    let mut wanted: Vec<i32> = cover
+        .lines()
+        .find(|l| !l.starts_with('c'))
+        .unwrap()
+        .split_whitespace()
+        .map(|t| t.parse().unwrap())
+        .filter(|&l| l != 0)
+        .collect();
+    wanted.sort_unstable();
+    let mut lines: Vec<String> = cnf.lines().map(String::from).collect();
+    let header: Vec<String> = lines[0].split_whitespace().map(String::from).collect();
+    lines.retain(|l| {
+        let mut c: Vec<i32> = l
+            .split_whitespace()
+            .filter_map(|t| t.parse().ok())
+            .filter(|&x| x != 0)
+            .collect();
+        c.sort_unstable();
+        c != wanted
+    });
+    let count: usize = header[3].parse::<usize>().unwrap() - 1;
+    lines[0] = format!("p cnf {} {count}", header[2]);
+    std::fs::write(cert.join("k2.cnf"), lines.join("\n") + "\n").unwrap();
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(
+        text(&out).contains("are not a clause of the base formula"),
+        "{}",
+        text(&out)
+    );
+    std::fs::write(cert.join("k2.cnf"), &cnf).unwrap();
+
+    // A cube without its unit (its first clause): it may not stand for
+    // its literal.
+    let first = cert.join("k2.cube0.cnf");
+    let kept = std::fs::read_to_string(&first).unwrap();
+    let mut lines: Vec<&str> = kept.lines().collect();
+    let header: Vec<&str> = lines[0].split_whitespace().collect();
+    let count: usize = header[3].parse::<usize>().unwrap() - 1;
+    let new_header = format!("p cnf {} {count}", header[2]);
+    lines.remove(1);
+    lines[0] = &new_header;
+    std::fs::write(&first, lines.join("\n") + "\n").unwrap();
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(
+        text(&out).contains("k2.cube0.cnf: the cube of literal"),
+        "{}",
+        text(&out)
+    );
+}

@@ -43,6 +43,9 @@ pub struct BoundConfig {
     /// Record every refutation's formula and DRAT proof (sent as
     /// [`ExactEvent::Certified`]).
     pub certify: bool,
+    /// Threads for cube-and-conquer on each SAT question (1: one solver;
+    /// see `dissect_exact::ExactOptions::cube_threads`).
+    pub threads: usize,
 }
 
 impl Default for BoundConfig {
@@ -52,6 +55,7 @@ impl Default for BoundConfig {
             max_pieces: None,
             time_limit: TimeLimit::NONE,
             certify: false,
+            threads: 1,
         }
     }
 }
@@ -110,6 +114,7 @@ pub fn bound(
         certify: config.certify,
         max_encoding_bytes: BOUND_MAX_BYTES,
         sat_max_cells: dissect_exact::bound::SAT_MAX_CELLS,
+        cube_threads: config.threads.max(1),
         ..ExactOptions::default()
     };
     let cap = options.max_encoding_bytes;

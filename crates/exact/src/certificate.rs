@@ -36,6 +36,35 @@ pub struct Certificate {
     /// pieces `0..K`, no two in one piece), a part of the placement
     /// encoding: written when the whole encoding would not fit.
     pub clique_only: bool,
+    /// With cube-and-conquer: the cubes, each refuted on its own (then
+    /// [`Certificate::formula`] is the base formula every cube extends and
+    /// [`Certificate::proof`] is empty). The cubes' literals, in order,
+    /// are a clause of the base formula, so a model of it satisfies one of
+    /// them: the base is unsatisfiable when every cube is.
+    pub cubes: Vec<CubeProof>,
+}
+
+/// One cube's refutation: the base formula plus [`CubeProof::formula`]'s
+/// clauses is unsatisfiable.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CubeProof {
+    /// The cube's literal (the first clause of `formula`, a unit).
+    pub literal: i32,
+    /// The clauses added to the base formula, DIMACS (the header counts
+    /// every variable): the unit, then the connectivity encoding and the
+    /// cuts this cube met.
+    pub formula: String,
+    /// Clauses of `formula`.
+    pub clauses: usize,
+    /// The DRAT proof that the base and `formula` together are
+    /// unsatisfiable.
+    pub proof: String,
+    /// Variables of the base and `formula` together.
+    pub vars: usize,
+    /// Connectivity cuts among the clauses.
+    pub cuts: usize,
+    /// Whether the connectivity encoding is among the clauses.
+    pub connectivity: bool,
 }
 
 /// The certificate of an UNSAT answer of `sat` (recording) for `k` pieces
@@ -56,6 +85,7 @@ pub(crate) fn of_sat(
         cuts,
         connectivity,
         clique_only: false,
+        cubes: Vec::new(),
     }))
 }
 
@@ -91,8 +121,14 @@ pub(crate) fn clique(k: usize, clique: usize, stop: &AtomicBool) -> Option<Box<C
 }
 
 impl Certificate {
-    /// The lemmas of the proof (lines that are not deletions).
+    /// The lemmas of the proof (lines that are not deletions), of every
+    /// cube's proof with cube-and-conquer.
     pub fn lemmas(&self) -> usize {
-        self.proof.lines().filter(|l| !l.starts_with('d')).count()
+        let count = |p: &str| p.lines().filter(|l| !l.starts_with('d')).count();
+        if self.cubes.is_empty() {
+            count(&self.proof)
+        } else {
+            self.cubes.iter().map(|c| count(&c.proof)).sum()
+        }
     }
 }

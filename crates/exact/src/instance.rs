@@ -92,6 +92,11 @@ pub(crate) struct Instance {
     /// up to the target's symmetries (false under constraints those
     /// symmetries would break).
     pub target_symmetries: bool,
+    /// Whether the search may also take the first piece's motion into
+    /// shape 1 up to the symmetries of shape 0 that fix its anchor and the
+    /// anchored cells (`placement_encoding::orbit_representatives`); off
+    /// unless the search asks (the enumeration does not).
+    pub source_symmetries: bool,
 }
 
 impl Instance {
@@ -115,6 +120,7 @@ impl Instance {
                 .collect(),
             order,
             target_symmetries: true,
+            source_symmetries: false,
         }
     }
 

@@ -34,6 +34,7 @@ pub mod certificate;
 pub(crate) mod component_count;
 pub(crate) mod connectivity_cut;
 pub(crate) mod constraint_encoding;
+pub(crate) mod cube_and_conquer;
 pub mod enumerate;
 pub(crate) mod enumerate_symmetry;
 pub(crate) mod extent_clique;
@@ -48,7 +49,7 @@ pub mod search;
 pub(crate) mod shift_encoding;
 
 pub use bound::{cheap_bound, Bound, Reason};
-pub use certificate::Certificate;
+pub use certificate::{Certificate, CubeProof};
 pub use enumerate::{enumerate, EnumerateEvent, EnumerateObserver, EnumerateOptions, Enumeration};
 pub use motion::MotionSet;
 pub use placement_encoding::{EncodingSize, MotionEncoding};

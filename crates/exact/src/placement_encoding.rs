@@ -46,6 +46,11 @@ pub(crate) struct Encoding {
     pub motion: Vec<Vec<Vec<(i32, Motion)>>>,
     /// The shift variables of [`MotionEncoding::Shifts`].
     pub shift_vars: usize,
+    /// The literals of one at-least-one clause of the formula, to split it
+    /// into cubes (`cube_and_conquer`): piece 0's motions into shape 1
+    /// (direct encoding) when it has two or more, else "this cell of shape
+    /// 0 is in some piece" for a cell that no piece is anchored at.
+    pub cube: Vec<i32>,
 }
 
 /// How the motion of each piece into each other figure is encoded.
@@ -293,13 +298,37 @@ pub(crate) fn encode(
         )?);
     }
     anchor.truncate(k);
+    let cube = cube_clause(&cell, &motion, &anchor);
     Some(Encoding {
         k,
         anchors: anchor,
         cell,
         motion,
         shift_vars,
+        cube,
     })
+}
+
+/// The literals of [`Encoding::cube`]: each is a clause of the formula
+/// (`motions_of_shape`'s at-least-one motion, `one_piece_per_cell`'s
+/// at-least-one piece).
+fn cube_clause(
+    cell: &[Vec<Vec<i32>>],
+    motion: &[Vec<Vec<(i32, Motion)>>],
+    anchor: &[usize],
+) -> Vec<i32> {
+    if let Some(first) = motion.get(1).and_then(|m| m.first()) {
+        if first.len() >= 2 {
+            return first.iter().map(|(v, _)| *v).collect();
+        }
+    }
+    let n = cell[0].first().map_or(0, Vec::len);
+    // The middle cell, or the next one no piece is anchored at.
+    let c = (0..n)
+        .map(|i| (n / 2 + i) % n.max(1))
+        .find(|c| !anchor.contains(c))
+        .unwrap_or(0);
+    cell[0].iter().map(|piece| piece[c]).collect()
 }
 
 /// Exactly one piece per cell (`cell[f][i][c]`: cell `c` of shape `f` is
@@ -483,6 +512,91 @@ fn shifts_of_shape(
     Some(count)
 }
 
+/// The symmetries of shape `f` admitted by `set` as maps of its cells:
+/// `(symmetry index, the image of each cell)`.
+fn cell_maps(inst: &Instance, f: usize, set: MotionSet) -> Vec<(usize, Vec<usize>)> {
+    let s = &inst.shapes[f];
+    let min = *s.points.iter().min().expect("non-empty");
+    self_symmetries(inst, f)
+        .into_iter()
+        .filter(|&h| set.admits(h, inst.syms[h].determinant()))
+        .map(|h| {
+            let g = &inst.syms[h];
+            let low = s
+                .points
+                .iter()
+                .map(|p| g.apply(*p))
+                .min()
+                .expect("non-empty");
+            let t = min - low;
+            let map = s
+                .points
+                .iter()
+                .map(|p| s.index[&(g.apply(*p) + t)])
+                .collect();
+            (h, map)
+        })
+        .collect()
+}
+
+/// Which motions of `all` (into shape 1) the first piece keeps when the
+/// symmetries of both shapes are broken: one per orbit.
+///
+/// Soundness: let `σ` be a symmetry of shape 0 that fixes the first
+/// anchor `c0` and maps the anchored cells onto themselves, and `τ` one of
+/// shape 1. A dissection with piece motions `m_i` into shape 1 gives
+/// another one: pieces `σ(P_i)`, motions `τ ∘ m_i ∘ σ⁻¹` into shape 1 (and
+/// `m_i ∘ σ⁻¹` into the others); the piece at `c0` is still the first, the
+/// other anchored pieces are renumbered after their anchors, the free
+/// pieces after their first cells. The first piece's motion `m` becomes
+/// `τ ∘ m ∘ σ⁻¹`: symmetry `lin(τ) g lin(σ)⁻¹`, anchor image `τ(m(c0))`
+/// (as `σ(c0) = c0`). So some dissection, if any, has the first piece at
+/// the least `(symmetry, anchor image)` of its orbit; only those motions
+/// are kept (with no such `σ` but the identity this is the coset
+/// reduction of [`piece_symmetries`], which it replaces for shape 1).
+/// Held by `tests/exact.rs` `source_symmetry_breaking_matches_brute_force`.
+fn orbit_representatives(
+    inst: &Instance,
+    set: MotionSet,
+    anchor: &[usize],
+    all: &[Motion],
+) -> Vec<bool> {
+    let c0 = anchor.first().copied().unwrap_or(0);
+    let mut anchored: Vec<usize> = anchor.to_vec();
+    anchored.sort_unstable();
+    let sources: Vec<(usize, Vec<usize>)> = cell_maps(inst, 0, set)
+        .into_iter()
+        .filter(|(_, map)| {
+            let mut img: Vec<usize> = anchored.iter().map(|&a| map[a]).collect();
+            img.sort_unstable();
+            map[c0] == c0 && img == anchored
+        })
+        .collect();
+    let targets: Vec<(usize, Vec<usize>)> = cell_maps(inst, 1, set)
+        .into_iter()
+        .filter(|(h, _)| inst.target_symmetries || *h == 0)
+        .collect();
+    let shape1 = &inst.shapes[1];
+    let p0 = inst.shapes[0].points[c0];
+    let key = |m: &Motion| shape1.index.get(&m.transform.apply(p0)).copied();
+    let index = |s: dissect_core::lattice::Symmetry| inst.syms.iter().position(|x| *x == s);
+    all.iter()
+        .map(|m| {
+            let Some(b) = key(m) else {
+                // Not a motion the anchored piece can take.
+                return true;
+            };
+            sources.iter().all(|(hs, _)| {
+                let inv = inst.syms[*hs].inverse();
+                targets.iter().all(|(ht, tmap)| {
+                    let g = inst.syms[*ht].compose(&inst.syms[m.sym]).compose(&inv);
+                    index(g).is_none_or(|g| (g, tmap[b]) >= (m.sym, b))
+                })
+            })
+        })
+        .collect()
+}
+
 /// The motion variables of each piece into shape `f` (from `set`) and
 /// the clauses that tie a piece's cells in shape 0 to its cells in shape
 /// `f`. `None` when interrupted.
@@ -497,13 +611,21 @@ fn motions_of_shape(
     let shapes = &inst.shapes;
     let all = motions_into(inst, f, set, interrupted)?;
     let (_, reps) = piece_symmetries(inst, f, set);
+    let orbits =
+        (f == 1 && inst.source_symmetries).then(|| orbit_representatives(inst, set, anchor, &all));
     let target = &shapes[f];
     let mut per_piece = Vec::with_capacity(cell[0].len());
     for (i, (from, into)) in cell[0].iter().zip(&cell[f]).enumerate() {
         let anchor_cell = anchor.get(i).copied();
         let allowed: Vec<Motion> = all
             .iter()
-            .filter(|m| i != 0 || reps[m.sym])
+            .enumerate()
+            .filter(|(j, m)| match (i, &orbits) {
+                (0, Some(keep)) => keep[*j],
+                (0, None) => reps[m.sym],
+                _ => true,
+            })
+            .map(|(_, m)| m)
             .filter(|m| match anchor_cell {
                 Some(c) => target
                     .index

@@ -132,6 +132,26 @@ impl<'a> Sat<'a> {
         Some((format!("p cnf {} {count}\n{body}", self.vars()), count))
     }
 
+    /// The recorded clauses from the `first`-th on (counted from 0) as a
+    /// DIMACS CNF whose header counts all variables: what was added after
+    /// a base formula of `first` clauses.
+    pub fn dimacs_from(&self, first: usize) -> Option<(String, usize)> {
+        let body = self.recorded.as_ref()?;
+        let mut start = 0;
+        for _ in 0..first {
+            match body[start..].find('\n') {
+                Some(i) => start += i + 1,
+                None => {
+                    start = body.len();
+                    break;
+                }
+            }
+        }
+        let tail = &body[start..];
+        let count = tail.lines().count();
+        Some((format!("p cnf {} {count}\n{tail}", self.vars()), count))
+    }
+
     /// A fresh variable.
     pub fn var(&mut self) -> i32 {
         let v = self.next_var;

@@ -82,6 +82,19 @@ pub struct ExactOptions {
     /// keeps it, beside its heuristic); `dissect bound` asks for
     /// `SAT_MAX_CELLS`.
     pub sat_max_cells: usize,
+    /// Threads for cube-and-conquer on the full model (1: none): "at most
+    /// K pieces" is split into one cube per literal of one of its
+    /// at-least-one clauses (`Encoding::cube`), the cubes solved in
+    /// parallel; UNSAT once every cube is. Each cube may spend what is
+    /// left of [`ExactOptions::conflict_budget`] (so a pass may spend up to
+    /// that many per cube). Not used under constraints.
+    pub cube_threads: usize,
+    /// Break the symmetries of the reference figure too: the first piece's
+    /// motion into the second figure is taken as one per orbit under the
+    /// reference figure's symmetries that fix the anchored cells and the
+    /// second figure's symmetries (direct encoding; docs/FORMAT.md
+    /// "Certificates" for why that is sound). Never under constraints.
+    pub source_symmetries: bool,
 }
 
 /// The default of [`ExactOptions::max_encoding_bytes`]: 512 MiB.
@@ -126,6 +139,8 @@ impl Default for ExactOptions {
             certify: false,
             motion_encoding: MotionEncoding::Auto,
             sat_max_cells: crate::bound::FULL_GRAPH_MAX_CELLS,
+            cube_threads: 1,
+            source_symmetries: true,
         }
     }
 }
@@ -185,6 +200,20 @@ pub enum ExactEvent {
     /// just before the [`ExactEvent::Refuted`] it proves, or alone for the
     /// cheap bound's `L - 1`.
     Certified(Certificate),
+    /// Cube-and-conquer ([`ExactOptions::cube_threads`]): a cube was
+    /// settled (refuted, or not: a model, a stop or the deadline).
+    Cube {
+        /// K.
+        pieces: usize,
+        /// The cube (from 0).
+        index: usize,
+        /// The number of cubes.
+        of: usize,
+        /// Whether it was refuted.
+        refuted: bool,
+        /// Seconds it took.
+        seconds: f64,
+    },
     /// A verified dissection into `pieces` pieces.
     Found {
         /// Its piece count.
@@ -229,7 +258,7 @@ impl ExactOutcome {
     }
 }
 
-enum Pass {
+pub(crate) enum Pass {
     Unsat {
         cuts: usize,
         seconds: f64,
@@ -255,6 +284,7 @@ struct Context<'a> {
     constraints: Option<&'a dissect_puzzle::Constraints>,
     certify: bool,
     motion_encoding: MotionEncoding,
+    cube_threads: usize,
     /// Conflicts spent so far.
     spent: std::cell::Cell<u64>,
 }
@@ -403,7 +433,6 @@ impl Context<'_> {
                 motions: enc.motions(),
             },
         });
-        let mut total = 0;
         let shape0 = &self.inst.shapes[0];
         let (cv, cc) = connectivity_size(shape0.len(), k, shape0.adj.iter().map(Vec::len).sum());
         let connectivity_fits = bytes.saturating_add(
@@ -414,38 +443,114 @@ impl Context<'_> {
             }
             .bytes(false),
         ) <= self.max_bytes;
-        let mut connected_encoding = !(self.eager_connectivity && connectivity_fits);
+        let cutting = Cutting {
+            inst: self.inst,
+            cuts_per_piece: self.cuts_per_piece,
+            observer: self.observer,
+            eager: self.eager_connectivity && connectivity_fits,
+        };
+        if set == MotionSet::All && self.cube_threads > 1 && self.constraints.is_none() {
+            let cubes = crate::cube_and_conquer::Cubes {
+                cutting: &cutting,
+                clique: self.clique,
+                incompat: self.incompat,
+                stop: self.stop,
+                upper: self.upper,
+                style,
+                certify: self.certify,
+                threads: self.cube_threads,
+            };
+            let cover = crate::cube_and_conquer::add_groups(
+                &mut sat,
+                &enc.cube,
+                self.cube_threads * crate::cube_and_conquer::CUBES_PER_THREAD,
+            );
+            let base = sat.dimacs().map(|(text, _)| text);
+            let base_clauses = sat.clauses();
+            drop(sat);
+            let (pass, conflicts) = cubes.pass(
+                k,
+                &cover,
+                (base, base_clauses),
+                (deadline, conflicts),
+                start,
+            );
+            self.spent.set(self.spent.get() + conflicts);
+            return pass;
+        }
+        let answer = cutting.solve(&mut sat, &enc, k, deadline, &interrupted);
+        spend(&sat);
+        match answer {
+            Connected::Unknown => Pass::Unknown,
+            Connected::Found(p) => Pass::Found(p),
+            Connected::Unsat { cuts, connected } => Pass::Unsat {
+                cuts,
+                seconds: start.elapsed().as_secs_f64(),
+                certificate: crate::certificate::of_sat(&sat, k, cuts, connected),
+            },
+        }
+    }
+}
+
+/// How a solve with connectivity ended.
+pub(crate) enum Connected {
+    /// Unsatisfiable with `cuts` connectivity cuts (`connected`: with the
+    /// connectivity encoding).
+    Unsat { cuts: usize, connected: bool },
+    /// A model with connected pieces (cell indices per shape and piece).
+    Found(Vec<Vec<Vec<usize>>>),
+    /// Stopped, past the deadline or out of conflicts.
+    Unknown,
+}
+
+/// Solves an encoding until its model has connected pieces, adding the
+/// connectivity encoding (or cuts) at each split model.
+pub(crate) struct Cutting<'a> {
+    pub inst: &'a Instance,
+    pub cuts_per_piece: usize,
+    pub observer: &'a dyn ExactObserver,
+    /// Add the full connectivity encoding at the first split model (else
+    /// cuts only).
+    pub eager: bool,
+}
+
+impl Cutting<'_> {
+    /// Solves `sat` (holding `enc` for `k` pieces) with connectivity cuts
+    /// until a model is connected, it is UNSAT, or it is interrupted.
+    pub(crate) fn solve(
+        &self,
+        sat: &mut Sat<'_>,
+        enc: &crate::placement_encoding::Encoding,
+        k: usize,
+        deadline: Option<Instant>,
+        interrupted: &dyn Fn() -> bool,
+    ) -> Connected {
+        let mut total = 0;
+        let mut connected_encoding = !self.eager;
         loop {
-            let answer = sat.solve(deadline);
-            if answer != Some(true) {
-                spend(&sat);
-            }
-            match answer {
-                None => return Pass::Unknown,
+            match sat.solve(deadline) {
+                None => return Connected::Unknown,
                 Some(false) => {
-                    return Pass::Unsat {
+                    return Connected::Unsat {
                         cuts: total,
-                        seconds: start.elapsed().as_secs_f64(),
-                        certificate: crate::certificate::of_sat(&sat, k, total, connected_encoding),
+                        connected: connected_encoding,
                     }
                 }
                 Some(true) => {
-                    let pieces = enc.decode(&sat);
+                    let pieces = enc.decode(sat);
                     let found = cuts(&self.inst.shapes, &pieces, self.cuts_per_piece);
                     if found.is_empty() {
-                        spend(&sat);
-                        return Pass::Found(pieces);
+                        return Connected::Found(pieces);
                     }
                     if !connected_encoding {
                         if !add_connectivity(
-                            &mut sat,
+                            sat,
                             &self.inst.shapes[0],
                             &enc.cell[0],
                             &enc.anchors,
-                            &interrupted,
+                            interrupted,
                         ) {
-                            spend(&sat);
-                            return Pass::Unknown;
+                            return Connected::Unknown;
                         }
                         connected_encoding = true;
                         self.observer
@@ -453,8 +558,7 @@ impl Context<'_> {
                         continue;
                     }
                     if interrupted() {
-                        spend(&sat);
-                        return Pass::Unknown;
+                        return Connected::Unknown;
                     }
                     for cut in &found {
                         for piece in &enc.cell[cut.shape] {
@@ -526,6 +630,7 @@ pub fn search(
     if let Some(c) = &options.constraints {
         inst.target_symmetries = !crate::constraint_encoding::needs_all_target_motions(c);
     }
+    inst.source_symmetries = options.source_symmetries && options.constraints.is_none();
     let ctx = Context {
         inst: &inst,
         clique: &clique,
@@ -539,6 +644,7 @@ pub fn search(
         constraints: options.constraints.as_ref(),
         certify: options.certify,
         motion_encoding: options.motion_encoding,
+        cube_threads: options.cube_threads,
         spent: std::cell::Cell::new(0),
     };
     let left = || {
@@ -725,8 +831,9 @@ pub fn dimacs_within(
         return Err(e);
     }
     let mut cheap = cheap(figures, mirror, &|| false)?;
-    let (inst, clique, incompat) =
+    let (mut inst, clique, incompat) =
         model_inputs(figures, mirror, &mut cheap).expect("not interrupted");
+    inst.source_symmetries = true;
     let all = (MotionSet::All, MotionEncoding::Auto);
     if let Some(e) = too_large(estimate(&inst, k, all, &clique, &incompat, &|| false)) {
         return Err(e);

@@ -223,3 +223,83 @@ fn shift_chain_refutations_are_certified_and_need_their_clauses() {
     });
     assert!(failed, "no clause of {} was needed", k2.clauses);
 }
+
+/// Cube-and-conquer (two threads): the certificate is the base formula and
+/// one proof per cube; the checker verifies it, and fails when a clause of
+/// the base is removed (some clause), when a cube is missing, or when the
+/// cover is no clause of the base.
+#[test]
+fn cube_and_conquer_certificates_verify_and_need_every_part() {
+    // A U into a bar: 3 pieces (brute force, tests/exact.rs).
+    let figs = figures(LatticeKind::Square, &["#.#\n###", "#####"]);
+    let options = ExactOptions {
+        mode: Mode::LowerBound,
+        max_pieces: Some(2),
+        certify: true,
+        cube_threads: 2,
+        ..ExactOptions::default()
+    };
+    let collect = Collect(Mutex::new(Vec::new()), Mutex::new(Vec::new()));
+    let out = search(
+        &figs,
+        &options,
+        &AtomicBool::new(false),
+        &AtomicUsize::new(usize::MAX),
+        &collect,
+    )
+    .expect("search runs");
+    assert_eq!(out.lower_bound.value, 3);
+    let certs = collect.0.into_inner().unwrap();
+    let k2 = certs.iter().find(|c| c.pieces == 2).expect("k2 certified");
+    assert!(k2.cubes.len() >= 2, "{} cubes", k2.cubes.len());
+    assert!(k2.proof.is_empty());
+    let base = dissect_proof::Cnf::parse(&k2.formula).expect("the base parses");
+    assert_eq!(base.clauses().len(), k2.clauses);
+    let cover: Vec<i32> = k2.cubes.iter().map(|c| c.literal).collect();
+    let parts: Vec<(dissect_proof::Cnf, dissect_proof::Proof)> = k2
+        .cubes
+        .iter()
+        .map(|c| {
+            let cnf = dissect_proof::Cnf::parse(&c.formula).expect("a cube parses");
+            assert_eq!(cnf.clauses()[0], vec![c.literal], "the unit first");
+            let proof = dissect_proof::Proof::parse(&c.proof).expect("a proof parses");
+            (cnf, proof)
+        })
+        .collect();
+    let verified = dissect_proof::check_cubes(&base, &cover, &parts).expect("verified");
+    assert_eq!(verified.len(), cover.len());
+    // A missing cube.
+    assert!(matches!(
+        dissect_proof::check_cubes(&base, &cover, &parts[1..]),
+        Err((None, dissect_proof::ProofError::MissingCube { .. }))
+    ));
+    // A cover that is not a clause of the base.
+    assert!(matches!(
+        dissect_proof::check_cubes(&base, &cover[1..], &parts[1..]),
+        Err((None, dissect_proof::ProofError::NotCovered { .. }))
+    ));
+    // A clause of the base removed: some removal breaks a cube's proof or
+    // the cover.
+    let failed = (0..k2.clauses).any(|drop| {
+        let cnf = dissect_proof::Cnf::parse(&without_clause(&k2.formula, drop)).expect("parses");
+        dissect_proof::check_cubes(&cnf, &cover, &parts).is_err()
+    });
+    assert!(failed, "no clause of {} was needed", k2.clauses);
+    // The cover's own clause removed.
+    let wanted = {
+        let mut c = cover.clone();
+        c.sort_unstable();
+        c
+    };
+    let at = base
+        .clauses()
+        .iter()
+        .position(|c| {
+            let mut c = c.clone();
+            c.sort_unstable();
+            c == wanted
+        })
+        .expect("the cover is a clause");
+    let cnf = dissect_proof::Cnf::parse(&without_clause(&k2.formula, at)).expect("parses");
+    assert!(dissect_proof::check_cubes(&cnf, &cover, &parts).is_err());
+}

@@ -571,3 +571,93 @@ fn the_corner_bound_holds_for_large_sums_of_cubes() {
         }
     }
 }
+
+/// The lower bound proved below the brute-force minimum, with the given
+/// symmetry breaking and cube threads.
+fn bound_with(
+    lattice: LatticeKind,
+    mirror: bool,
+    texts: &[&str],
+    (source_symmetries, cube_threads): (bool, usize),
+) -> (usize, usize) {
+    let figs = figures(lattice, texts);
+    let (brute, _) = Brute::new(lattice, mirror).minimum(&figs);
+    let run = |mode, max_pieces| {
+        let options = ExactOptions {
+            mirror,
+            mode,
+            max_pieces,
+            source_symmetries,
+            cube_threads,
+            ..ExactOptions::default()
+        };
+        search(
+            &figs,
+            &options,
+            &AtomicBool::new(false),
+            &AtomicUsize::new(usize::MAX),
+            &(),
+        )
+        .expect("search runs")
+    };
+    let found = run(Mode::Minimum, None);
+    let pieces = found.found.expect("a dissection");
+    let count = dissect_core::verify::verify_pieces(lattice, mirror, &figs, &pieces)
+        .expect("the SAT dissection is valid");
+    assert_eq!(count, brute, "{texts:?}: SAT minimum vs brute force");
+    if brute > 1 {
+        let bound = run(Mode::LowerBound, Some(brute - 1));
+        assert!(bound.found.is_none());
+        return (brute, bound.lower_bound.value);
+    }
+    (brute, 1)
+}
+
+/// Figures with symmetries of their own (the reference figure's
+/// symmetries that fix its anchors are broken on top of the second
+/// figure's): UNSAT with the breaking exactly when without it, and both
+/// as brute force says.
+#[test]
+fn source_symmetry_breaking_matches_brute_force() {
+    let s = LatticeKind::Square;
+    let cases: [&[&str]; 6] = [
+        &["###\n#.#\n###", "####\n####"],
+        &[".#.\n###\n.#.", "#####"],
+        &["###\n###\n###", "#########"],
+        &["##\n##", "####"],
+        &["#.#\n###", "#####"],
+        &["##.\n###\n.##", "###\n###\n#.."],
+    ];
+    for texts in cases {
+        for mirror in [true, false] {
+            let on = bound_with(s, mirror, texts, (true, 1));
+            let off = bound_with(s, mirror, texts, (false, 1));
+            assert_eq!(on, off, "{texts:?} mirror {mirror}");
+            assert_eq!(on.0, on.1, "{texts:?}: the bound is the minimum");
+        }
+    }
+    let c = LatticeKind::Cubic;
+    let cube = ["##\n##\n\n##\n##", "####\n####"];
+    assert_eq!(bound_with(c, false, &cube, (true, 1)), (2, 2));
+}
+
+/// Cube-and-conquer on two threads: the same minimum and bound as one
+/// solver and brute force.
+#[test]
+fn cube_and_conquer_matches_brute_force() {
+    let s = LatticeKind::Square;
+    let cases: [&[&str]; 5] = [
+        &["###\n#..", "##\n##"],
+        &["#.#\n###", "#####"],
+        &["###\n#.#\n###", "####\n####"],
+        &["##..\n.##.\n..##", "###\n###"],
+        &["####", "##\n##", "#..\n###"],
+    ];
+    for texts in cases {
+        let (brute, bound) = bound_with(s, true, texts, (true, 2));
+        assert_eq!(brute, bound, "{texts:?}");
+    }
+    let c = LatticeKind::Cubic;
+    let two = ["##\n##\n\n##\n##", "####\n####"];
+    assert_eq!(bound_with(c, false, &two, (true, 2)), (2, 2));
+}

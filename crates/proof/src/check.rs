@@ -372,7 +372,7 @@ fn max_var(proof: &Proof) -> usize {
         .unwrap_or(0)
 }
 
-fn dimacs(lits: &[i32]) -> String {
+pub(crate) fn dimacs(lits: &[i32]) -> String {
     let mut s: String = lits.iter().map(|l| format!("{l} ")).collect();
     s.push('0');
     s

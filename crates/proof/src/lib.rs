@@ -10,13 +10,19 @@
 //! present yields a conflict (the empty clause is then RUP), which proves
 //! the formula unsatisfiable.
 //!
+//! Cube-and-conquer certificates ([`check_cubes`]): a base formula, one of
+//! its clauses whose literals are the cubes, and per cube the clauses it
+//! adds (its unit first) with a proof refuting the base plus them.
+//!
 //! Architecture invariant: no I/O, no printing; the texts come in as
 //! strings, errors name the line.
 
 mod check;
+mod cubes;
 mod parse;
 
 pub use check::{check, Verified};
+pub use cubes::{check_cubes, parse_cover};
 pub use parse::{Cnf, Proof, Step};
 
 /// Which of the two texts an error is in.
@@ -26,6 +32,8 @@ pub enum Source {
     Formula,
     /// The DRAT proof.
     Proof,
+    /// The cover of a cube-and-conquer certificate (one clause).
+    Cubes,
 }
 
 impl std::fmt::Display for Source {
@@ -33,6 +41,7 @@ impl std::fmt::Display for Source {
         f.write_str(match self {
             Source::Formula => "formula",
             Source::Proof => "proof",
+            Source::Cubes => "cubes",
         })
     }
 }
@@ -67,16 +76,39 @@ pub enum ProofError {
         /// The last line of the proof.
         line: usize,
     },
+    /// Occurs when the cubes' literals are no clause of the base formula:
+    /// the cubes need not cover it.
+    #[error("the cubes {cover} are not a clause of the base formula")]
+    NotCovered {
+        /// The cover clause, in DIMACS.
+        cover: String,
+    },
+    /// Occurs when there are not as many cubes as literals in the cover.
+    #[error("{cubes} cubes for the {literals} literals of the cover")]
+    MissingCube {
+        /// Cubes given.
+        cubes: usize,
+        /// Literals of the cover.
+        literals: usize,
+    },
+    /// Occurs when a cube's clauses lack the unit of its literal.
+    #[error("the cube of literal {literal} does not hold the unit clause `{literal} 0`")]
+    NoUnit {
+        /// The cube's literal.
+        literal: i32,
+    },
 }
 
 impl ProofError {
-    /// The text the error is in and its line.
+    /// The text the error is in and its line (0: the text as a whole).
     pub fn location(&self) -> (Source, usize) {
         match self {
             ProofError::Parse { text, line, .. } => (*text, *line),
             ProofError::NotImplied { line, .. } | ProofError::Incomplete { line } => {
                 (Source::Proof, *line)
             }
+            ProofError::NotCovered { .. } | ProofError::MissingCube { .. } => (Source::Cubes, 0),
+            ProofError::NoUnit { .. } => (Source::Formula, 0),
         }
     }
 }

@@ -224,3 +224,52 @@ fn accepted_proofs_are_of_unsatisfiable_formulas_only() {
         "{accepted} accepted, {unsat} unsatisfiable"
     );
 }
+
+/// Cube-and-conquer: `(1 ∨ 2)` is a clause of the base, each literal's
+/// cube is refuted; the checker accepts it and refuses a missing cube, a
+/// cover that is no clause of the base, a cube without its unit, a cube
+/// whose proof fails, and a malformed cover.
+#[test]
+fn cubes_cover_the_base_and_each_is_refuted() {
+    use dissect_proof::{check_cubes, parse_cover, Cnf, Proof, ProofError};
+    let base = Cnf::parse("p cnf 3 4\n1 2 0\n-1 3 0\n-2 3 0\n-3 1 2 0\n").unwrap();
+    let cover = parse_cover("c the cubes\n1 2 0\n").unwrap();
+    assert_eq!(cover, vec![1, 2]);
+    // Cube 1 needs `-3` to conflict: its formula adds it with the unit.
+    let cube = |text: &str| Cnf::parse(text).unwrap();
+    let empty = Proof::parse("0\n").unwrap();
+    let ok = vec![
+        (cube("p cnf 3 2\n1 0\n-3 0\n"), empty.clone()),
+        (cube("p cnf 3 2\n2 0\n-3 0\n"), empty.clone()),
+    ];
+    assert_eq!(check_cubes(&base, &cover, &ok).unwrap().len(), 2);
+    assert!(matches!(
+        check_cubes(&base, &cover, &ok[..1]),
+        Err((
+            None,
+            ProofError::MissingCube {
+                cubes: 1,
+                literals: 2
+            }
+        ))
+    ));
+    assert!(matches!(
+        check_cubes(&base, &[1, 3], &ok),
+        Err((None, ProofError::NotCovered { .. }))
+    ));
+    let no_unit = vec![ok[0].clone(), (cube("p cnf 3 1\n-3 0\n"), empty.clone())];
+    assert!(matches!(
+        check_cubes(&base, &cover, &no_unit),
+        Err((Some(1), ProofError::NoUnit { literal: 2 }))
+    ));
+    // Without `-3` cube 1 is satisfiable (2, 3): no proof refutes it.
+    let satisfiable = vec![ok[0].clone(), (cube("p cnf 3 1\n2 0\n"), empty)];
+    assert!(matches!(
+        check_cubes(&base, &cover, &satisfiable),
+        Err((Some(1), ProofError::NotImplied { .. }))
+    ));
+    assert!(parse_cover("1 2\n").is_err(), "not ended by 0");
+    assert!(parse_cover("1 0\n2 0\n").is_err(), "two clauses");
+    assert!(parse_cover("0\n").is_err(), "empty");
+    assert!(parse_cover("1 x 0\n").is_err(), "not a literal");
+}

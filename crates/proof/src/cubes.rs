@@ -1,0 +1,112 @@
+//! Cube-and-conquer certificates: a base formula `F`, a clause
+//! `C = (l_1 ∨ ... ∨ l_m)` of `F` (the cover), and per literal `l_j` a set
+//! of clauses `E_j` holding the unit `l_j` with a DRAT proof that `F ∧ E_j`
+//! is unsatisfiable.
+//!
+//! Why that proves the claim: the encoder claims (as for a single
+//! certificate, whose formula holds such clauses too) that every real
+//! dissection is a model of `F` that extends to a model of each `E_j`
+//! less its unit (connectivity clauses, cuts). Such a model satisfies `C`,
+//! so some `l_j`, and then extends to a model of `F ∧ E_j`, which the
+//! proof of cube `j` refutes. [`check_cubes`] checks every part of this: that `C`
+//! is a clause of `F`, that there is one cube per literal of `C` in order,
+//! that cube `j` holds the unit `l_j`, and each proof against `F ∧ E_j`.
+
+use crate::check::{check, Verified};
+use crate::parse::{Cnf, Proof};
+use crate::{ProofError, Source};
+
+/// Parses the cover file: `c` comment lines and one clause ended by `0`.
+pub fn parse_cover(text: &str) -> Result<Vec<i32>, ProofError> {
+    let err = |line: usize, message: String| ProofError::Parse {
+        text: Source::Cubes,
+        line,
+        message,
+    };
+    let mut clause: Vec<i32> = Vec::new();
+    let mut ended: Option<usize> = None;
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        let trimmed = raw.trim();
+        if trimmed.is_empty() || trimmed.starts_with('c') {
+            continue;
+        }
+        for token in trimmed.split_whitespace() {
+            if ended.is_some() {
+                return Err(err(line, "more than one clause".into()));
+            }
+            let lit: i32 = token.parse().map_err(|_| {
+                err(
+                    line,
+                    format!(
+                        "`{}` is not a literal",
+                        token.chars().take(20).collect::<String>()
+                    ),
+                )
+            })?;
+            if lit == 0 {
+                ended = Some(line);
+            } else {
+                clause.push(lit);
+            }
+        }
+    }
+    if ended.is_none() {
+        return Err(err(
+            text.lines().count().max(1),
+            "no clause ended by 0".into(),
+        ));
+    }
+    if clause.is_empty() {
+        return Err(err(ended.unwrap_or(1), "the clause is empty".into()));
+    }
+    Ok(clause)
+}
+
+/// The literals of a clause as a sorted set.
+fn sorted(clause: &[i32]) -> Vec<i32> {
+    let mut c = clause.to_vec();
+    c.sort_unstable();
+    c.dedup();
+    c
+}
+
+/// Checks a cube-and-conquer certificate (see the module): `Ok` with each
+/// cube's [`Verified`] when it proves `base` unsatisfiable; else the
+/// first failure, with the index of the cube it is in (`None`: the
+/// cover).
+pub fn check_cubes(
+    base: &Cnf,
+    cover: &[i32],
+    cubes: &[(Cnf, Proof)],
+) -> Result<Vec<Verified>, (Option<usize>, ProofError)> {
+    let wanted = sorted(cover);
+    if !base.clauses().iter().any(|c| sorted(c) == wanted) {
+        return Err((
+            None,
+            ProofError::NotCovered {
+                cover: crate::check::dimacs(cover),
+            },
+        ));
+    }
+    if cubes.len() != cover.len() {
+        return Err((
+            None,
+            ProofError::MissingCube {
+                cubes: cubes.len(),
+                literals: cover.len(),
+            },
+        ));
+    }
+    let mut out = Vec::with_capacity(cubes.len());
+    for (j, ((extra, proof), &literal)) in cubes.iter().zip(cover).enumerate() {
+        if !extra.clauses().iter().any(|c| c.as_slice() == [literal]) {
+            return Err((Some(j), ProofError::NoUnit { literal }));
+        }
+        let mut clauses = base.clauses().to_vec();
+        clauses.extend(extra.clauses().iter().cloned());
+        let whole = Cnf::new(base.vars().max(extra.vars()), clauses);
+        out.push(check(&whole, proof).map_err(|e| (Some(j), e))?);
+    }
+    Ok(out)
+}
