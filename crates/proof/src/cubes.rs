@@ -13,7 +13,7 @@
 //! that cube `j` holds the unit `l_j`, and each proof against `F ∧ E_j`.
 
 use crate::check::{check, Verified};
-use crate::parse::{Cnf, Proof};
+use crate::parse::{literal, Cnf, Proof};
 use crate::{ProofError, Source};
 
 /// Parses the cover file: `c` comment lines and one clause ended by `0`.
@@ -35,15 +35,7 @@ pub fn parse_cover(text: &str) -> Result<Vec<i32>, ProofError> {
             if ended.is_some() {
                 return Err(err(line, "more than one clause".into()));
             }
-            let lit: i32 = token.parse().map_err(|_| {
-                err(
-                    line,
-                    format!(
-                        "`{}` is not a literal",
-                        token.chars().take(20).collect::<String>()
-                    ),
-                )
-            })?;
+            let lit = literal(token, line, Source::Cubes)?;
             if lit == 0 {
                 ended = Some(line);
             } else {

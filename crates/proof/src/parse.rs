@@ -27,6 +27,19 @@ pub struct Proof {
     last_line: usize,
 }
 
+/// One literal of a clause (a nonzero or zero `i32`), or an error naming
+/// `line` of `source`.
+pub(crate) fn literal(token: &str, line: usize, source: Source) -> Result<i32, ProofError> {
+    token.parse().map_err(|_| ProofError::Parse {
+        text: source,
+        line,
+        message: format!(
+            "`{}` is not a literal",
+            token.chars().take(20).collect::<String>()
+        ),
+    })
+}
+
 /// Splits `text` into clauses: `(line, is_deletion, literals)` for every
 /// clause ended by `0`, skipping `c` comment lines and the lines `skip`
 /// accepts.
@@ -59,15 +72,7 @@ fn clauses(
                 }
                 continue;
             }
-            let lit: i32 = token.parse().map_err(|_| {
-                err(
-                    line,
-                    format!(
-                        "`{}` is not a literal",
-                        token.chars().take(20).collect::<String>()
-                    ),
-                )
-            })?;
+            let lit = literal(token, line, source)?;
             let entry = open.get_or_insert_with(|| (line, false, Vec::new()));
             if lit == 0 {
                 out.push(open.take().expect("open"));
