@@ -304,20 +304,13 @@ impl<'r, 'a> Run<'r, 'a> {
                 self.offer_greedy(cand);
             }
         }
-        // Tidy first on ties (in the order of TIDY_SLACKS), then connected.
-        let mut best = (usize::MAX, greedy::Choice::Connected);
-        let tidy = fewest
-            .iter()
-            .filter(|(c, _)| matches!(c, greedy::Choice::Tidy { .. }));
-        let connected = fewest
-            .iter()
-            .filter(|(c, _)| *c == greedy::Choice::Connected);
-        for &(choice, k) in tidy.chain(connected) {
-            if k < best.0 {
-                best = (k, choice);
-            }
-        }
-        self.pilot_choice = best.1;
+        // The fewest pieces; on ties tidy first (in the order of
+        // TIDY_SLACKS, as they were run), then connected.
+        self.pilot_choice = fewest
+            .into_iter()
+            .filter(|(c, _)| *c != greedy::Choice::Overlap)
+            .min_by_key(|&(c, k)| (k, c == greedy::Choice::Connected))
+            .map_or(greedy::Choice::Connected, |(c, _)| c);
     }
 
     /// A constructive dissection (greedy or pilot, always valid) scored,

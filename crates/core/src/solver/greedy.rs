@@ -332,7 +332,10 @@ fn ranked_motions(
     let dst = &problem.shapes[to];
     let in_free = |p: Point| dst.lookup(p).is_some_and(|j| to_labels[j as usize] == FREE);
     let all = candidate_votes(problem, from, cells, to, to_labels, CANDIDATES);
-    let scored: Vec<(usize, usize)> = all
+    let tidy_choice = matches!(choice.0, Choice::Tidy { .. });
+    // Per candidate: (largest component, cells in common), and the
+    // components themselves when the tidy choice looks at their cut.
+    let scored: Vec<(MotionScore, Vec<Vec<u32>>)> = all
         .par_iter()
         .map(|&(_, s, t)| {
             let (sym, t) = (problem.geo.syms[s], Point::from(t));
@@ -341,38 +344,53 @@ fn ranked_motions(
                 .copied()
                 .filter(|&c| in_free(sym.apply(src.point(c)) + t))
                 .collect();
-            let largest = components(src, &common).iter().map(Vec::len).max();
-            (largest.unwrap_or(0), common.len())
+            let comps = components(src, &common);
+            let largest = comps.iter().map(Vec::len).max().unwrap_or(0);
+            let kept = if tidy_choice { comps } else { Vec::new() };
+            ((largest, common.len()), kept)
         })
         .collect();
-    let best = scored.iter().map(|s| s.0).max().unwrap_or(0);
+    let best = scored.iter().map(|s| s.0 .0).max().unwrap_or(0);
     let floor = match choice.0 {
         Choice::Tidy { slack } => best - best / slack.max(1),
         _ => usize::MAX,
     };
-    // The tidy key: 0 for the connected choice's order.
+    // The tidy key: the same for every candidate under the connected choice.
     let tidy: Vec<(usize, usize)> = all
         .par_iter()
         .zip(&scored)
-        .map(|(&(_, s, t), &(largest, _))| {
-            if largest < floor || largest == 0 {
+        .map(|(&(_, s, t), ((largest, _), comps))| {
+            if *largest < floor || *largest == 0 {
                 return (usize::MAX, usize::MAX);
             }
             let motion = (s, Point::from(t));
-            remainder_parts(problem, from, cells, to, to_labels, motion, choice.1)
+            remainder_parts(
+                problem,
+                from,
+                cells,
+                to,
+                to_labels,
+                motion,
+                (comps, choice.1),
+            )
         })
         .collect();
     let mut order: Vec<usize> = (0..all.len()).collect();
-    order.sort_by_key(|&i| (tidy[i], std::cmp::Reverse(scored[i]), i));
+    order.sort_by_key(|&i| (tidy[i], std::cmp::Reverse(scored[i].0), i));
     order
         .into_iter()
         .map(|i| (all[i].1, Point::from(all[i].2)))
         .collect()
 }
 
-/// What the cut of `motion` (the common part's components of at least
-/// `largest / divisor` cells) leaves: the components of the remainder in
-/// the more broken of the two figures, then in both together.
+/// A candidate motion's score under the connected choice: its common
+/// part's largest component, then its cells.
+type MotionScore = (usize, usize);
+
+/// What the cut of `motion` leaves (of the common part's components
+/// `cut.0`, those of at least `largest / cut.1` cells): the components of
+/// the remainder in the more broken of the two figures, then in both
+/// together.
 fn remainder_parts(
     problem: &Problem,
     from: usize,
@@ -380,20 +398,11 @@ fn remainder_parts(
     to: usize,
     to_labels: &[u16],
     motion: (usize, Point),
-    divisor: usize,
+    cut: (&[Vec<u32>], usize),
 ) -> (usize, usize) {
+    let (comps, divisor) = cut;
     let (src, dst) = (&problem.shapes[from], &problem.shapes[to]);
     let sym = problem.geo.syms[motion.0];
-    let image = |c: u32| {
-        dst.lookup(sym.apply(src.point(c)) + motion.1)
-            .filter(|&j| to_labels[j as usize] == FREE)
-    };
-    let common: Vec<u32> = cells
-        .iter()
-        .copied()
-        .filter(|&c| image(c).is_some())
-        .collect();
-    let comps = components(src, &common);
     let largest = comps.iter().map(Vec::len).max().unwrap_or(0);
     let keep = (largest / divisor.max(1)).max(1);
     let mut left_src = vec![false; src.len()];
@@ -404,36 +413,15 @@ fn remainder_parts(
     for comp in comps.iter().filter(|c| c.len() >= keep) {
         for &c in comp {
             left_src[c as usize] = false;
-            if let Some(j) = image(c) {
-                left_dst[j as usize] = false;
-            }
+            let j = dst
+                .lookup(sym.apply(src.point(c)) + motion.1)
+                .expect("a common cell lands inside");
+            left_dst[j as usize] = false;
         }
     }
-    let (a, b) = (count_parts(src, left_src), count_parts(dst, left_dst));
+    let a = src.count_marked(cells.iter().copied(), &mut left_src);
+    let b = dst.count_marked(0..dst.len() as u32, &mut left_dst);
     (a.max(b), a + b)
-}
-
-/// The connected components of the cells marked in `inside` (cleared).
-fn count_parts(shape: &Shape, mut inside: Vec<bool>) -> usize {
-    let mut count = 0;
-    let mut stack = Vec::new();
-    for c in 0..inside.len() {
-        if !inside[c] {
-            continue;
-        }
-        count += 1;
-        inside[c] = false;
-        stack.push(c as u32);
-        while let Some(x) = stack.pop() {
-            for &nb in shape.neighbors(x) {
-                if inside[nb as usize] {
-                    inside[nb as usize] = false;
-                    stack.push(nb);
-                }
-            }
-        }
-    }
-    count
 }
 
 /// The best `take` translations by votes of every class of symmetries

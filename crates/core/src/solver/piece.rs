@@ -72,29 +72,9 @@ impl Pieces {
     /// (`scratch` must hold `shape.len()` entries, all `false`; it is left so).
     pub(crate) fn components(&self, shape: &Shape, i: usize, scratch: &mut [bool]) -> usize {
         let cells = &self.members[i];
-        // Mark members, then count BFS trees.
-        let mut member = |c: u32, v: bool| scratch[c as usize] = v;
         for &c in cells {
-            member(c, true);
+            scratch[c as usize] = true;
         }
-        let mut comps = 0;
-        let mut stack = Vec::new();
-        for &c in cells {
-            if !scratch[c as usize] {
-                continue;
-            }
-            comps += 1;
-            scratch[c as usize] = false;
-            stack.push(c);
-            while let Some(u) = stack.pop() {
-                for &w in shape.neighbors(u) {
-                    if scratch[w as usize] {
-                        scratch[w as usize] = false;
-                        stack.push(w);
-                    }
-                }
-            }
-        }
-        comps
+        shape.count_marked(cells.iter().copied(), scratch)
     }
 }

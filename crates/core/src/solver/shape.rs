@@ -140,6 +140,35 @@ impl Shape {
             .collect()
     }
 
+    /// The connected components of the cells marked in `marked`, each
+    /// found from one of `starts` (which must include every marked cell);
+    /// clears the marks of every cell it reaches.
+    pub(crate) fn count_marked(
+        &self,
+        starts: impl IntoIterator<Item = u32>,
+        marked: &mut [bool],
+    ) -> usize {
+        let mut count = 0;
+        let mut stack = Vec::new();
+        for c in starts {
+            if !marked[c as usize] {
+                continue;
+            }
+            count += 1;
+            marked[c as usize] = false;
+            stack.push(c);
+            while let Some(u) = stack.pop() {
+                for &w in self.neighbors(u) {
+                    if marked[w as usize] {
+                        marked[w as usize] = false;
+                        stack.push(w);
+                    }
+                }
+            }
+        }
+        count
+    }
+
     /// The neighbours of cell `i` inside the shape.
     #[inline]
     pub(crate) fn neighbors(&self, i: u32) -> &[u32] {
