@@ -23,6 +23,8 @@ pub enum Source {
     Sectors,
     /// Touching pieces of the best dissection cut again exactly, fewer.
     Regroup,
+    /// The tail of the best dissection cut again by a randomized greedy.
+    Rebuild,
     /// The interlocking search (`--min-level`, `--assemblable`): touching
     /// pieces of a refused dissection cut again until it holds together.
     Interlock,
@@ -30,7 +32,7 @@ pub enum Source {
 
 impl Source {
     /// `greedy`, `search`, `repair`, `sat`, `coarse`, `sectors`,
-    /// `regroup` or `interlock`.
+    /// `regroup`, `rebuild` or `interlock`.
     pub fn name(self) -> &'static str {
         match self {
             Source::Greedy => "greedy",
@@ -40,6 +42,7 @@ impl Source {
             Source::Coarse => "coarse",
             Source::Sectors => "sectors",
             Source::Regroup => "regroup",
+            Source::Rebuild => "rebuild",
             Source::Interlock => "interlock",
         }
     }

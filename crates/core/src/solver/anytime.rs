@@ -36,6 +36,16 @@ const PILOT_EAGER_WIDTH: usize = 32;
 /// largest pieces).
 const PILOT_DEPTH: usize = 8;
 
+/// Tail rebuilds per batch ([`Run::rebuild`]).
+const REBUILDS: usize = 64;
+
+/// Batches of tail rebuilds per round of the anytime search on large
+/// figures (where the level search seldom finds fewer pieces).
+const REBUILD_BATCHES_PER_ROUND: usize = 8;
+
+/// A rebuild's step draws its motion among this many of the best.
+const REBUILD_TOP: usize = 4;
+
 /// Constructive dissections tied with the best that regrouping also
 /// tries ([`Run::regroup`]).
 const TIES: usize = 4;
@@ -159,6 +169,9 @@ pub fn solve_anytime_with(
         if large && !search.stopped() {
             improved |= run.pilot();
         }
+        if large && !search.stopped() {
+            improved |= run.rebuild(REBUILD_BATCHES_PER_ROUND);
+        }
         if improved && large && !search.stopped() {
             let before = run.inc.pieces();
             run.regroup();
@@ -217,6 +230,10 @@ struct Run<'r, 'a> {
     /// Constructive dissections with as many pieces as the best (the
     /// last [`TIES`]: the widest pilots'), for [`Run::regroup`].
     ties: Vec<Candidate>,
+    /// Where the tail rebuilds' walk stands ([`Run::rebuild`]).
+    walk: Option<Candidate>,
+    /// Batches of rebuilds so far (each draws its own streams).
+    rebuild_batch: usize,
 }
 
 impl<'r, 'a> Run<'r, 'a> {
@@ -250,6 +267,8 @@ impl<'r, 'a> Run<'r, 'a> {
             pilot_width: PILOT_WIDTH,
             pilot_choice: greedy::Choice::Connected,
             ties: Vec::new(),
+            walk: None,
+            rebuild_batch: 0,
         }
     }
 
@@ -315,7 +334,12 @@ impl<'r, 'a> Run<'r, 'a> {
 
     /// A constructive dissection (greedy or pilot, always valid) scored,
     /// judged and offered to the incumbent; whether it improved.
-    fn offer_greedy(&mut self, mut cand: Candidate) -> bool {
+    fn offer_greedy(&mut self, cand: Candidate) -> bool {
+        self.offer(cand, Via::Greedy)
+    }
+
+    /// [`Run::offer_greedy`] for a dissection made by `via`.
+    fn offer(&mut self, mut cand: Candidate, via: Via) -> bool {
         let search = self.search;
         let mut score = cand.evaluate(&search.problem, 0.0, search.options.split_penalty);
         debug_assert!(score.valid, "a constructive dissection is valid");
@@ -332,7 +356,7 @@ impl<'r, 'a> Run<'r, 'a> {
             self.ties.push(cand);
             return false;
         }
-        let improved = self.inc.improve(search, cand, score, level, 0, Via::Greedy);
+        let improved = self.inc.improve(search, cand, score, level, 0, via);
         if improved {
             self.ties.clear();
         }
@@ -395,7 +419,10 @@ impl<'r, 'a> Run<'r, 'a> {
             && self.pilot_width <= PILOT_MAX_WIDTH
             && (self.pilot_width <= PILOT_EAGER_WIDTH || improved)
         {
+            let width = self.pilot_width;
             improved = self.pilot();
+            // Rebuilds in proportion to the pilot's work.
+            improved |= self.rebuild(width / PILOT_WIDTH);
         }
     }
 
@@ -495,6 +522,68 @@ impl<'r, 'a> Run<'r, 'a> {
                 return;
             }
         }
+    }
+
+    /// Rebuilds of a dissection's tail ([`greedy::rebuild_until`]),
+    /// `batches` of [`REBUILDS`], each keeping a random number (up to half)
+    /// of the largest pieces, with a random style, drawing its own stream
+    /// (so the answer does not depend on the threads). They start from
+    /// the best dissection and walk on: a rebuild with no more pieces than
+    /// the last one is where the next start (so the walk crosses plateaus);
+    /// one with fewer pieces than the best is an improvement.
+    fn rebuild(&mut self, batches: usize) -> bool {
+        use rand::RngExt;
+        let search = self.search;
+        let mut improved = false;
+        for i in 0..batches * REBUILDS {
+            if search.stopped() {
+                break;
+            }
+            if i % REBUILDS == 0 {
+                self.rebuild_batch += 1;
+            }
+            let Some((best, _)) = self.inc.best.as_ref() else {
+                return improved;
+            };
+            let best_k = best.k;
+            let from = match self.walk.take() {
+                Some(w) if w.k <= best_k => w,
+                _ => best.clone(),
+            };
+            let batch = self.rebuild_batch;
+            let mut rng = super::stream(search.options.seed, batch, super::REBUILD, i % REBUILDS);
+            let most = (from.k / 2).max(1);
+            let keep = rng.random_range(1..=most);
+            let choices = [
+                self.pilot_choice,
+                greedy::Choice::Connected,
+                greedy::Choice::Tidy { slack: 3 },
+                greedy::Choice::Tidy { slack: 4 },
+                greedy::Choice::Tidy { slack: 6 },
+            ];
+            let style = greedy::GreedyStyle {
+                pivot: rng.random_range(0..search.figures.len()),
+                divisor: rng.random_range(1..=2),
+                choice: choices[rng.random_range(0..choices.len())],
+            };
+            let found = search.install(|| {
+                greedy::rebuild_until(
+                    &search.problem,
+                    style,
+                    (&from, keep),
+                    (&mut rng, REBUILD_TOP),
+                    search.stop,
+                )
+            });
+            let Some(cand) = found else {
+                break;
+            };
+            if cand.k < best_k {
+                improved |= self.offer(cand.clone(), Via::Rebuild);
+            }
+            self.walk = Some(if cand.k <= from.k { cand } else { from });
+        }
+        improved
     }
 
     /// The coarse step (round 0 of large figures): the anytime search on

@@ -135,6 +135,67 @@ pub(crate) fn pilot_until(
     Some((found, truncated))
 }
 
+/// A randomized rebuild of a dissection's tail (a large neighbourhood
+/// search step): the `keep` largest pieces of `cand` (whose label names the
+/// same piece in every figure) stay, and what is left of every figure is
+/// cut again greedily, each step's motion of the first other figure drawn
+/// from the style's ranking (the best one half of the time, otherwise one
+/// of the next `top - 1`). The constructive steps draw nothing at random,
+/// so their tails are all alike; this looks at their neighbours. `None`
+/// when stopped.
+pub(crate) fn rebuild_until(
+    problem: &Problem,
+    style: GreedyStyle,
+    (cand, keep): (&Candidate, usize),
+    (rng, top): (&mut impl rand::Rng, usize),
+    stop: &AtomicBool,
+) -> Option<Candidate> {
+    use rand::RngExt;
+    let mut state = State::new(problem, style);
+    let pivot = state.pivot;
+    let mut size = vec![0usize; cand.k];
+    for &l in &cand.labels[pivot] {
+        size[l as usize] += 1;
+    }
+    let mut order: Vec<usize> = (0..cand.k).collect();
+    order.sort_by_key(|&l| (std::cmp::Reverse(size[l]), l));
+    let mut relabel = vec![FREE; cand.k];
+    for (new, &l) in order.iter().take(keep).enumerate() {
+        relabel[l] = new as u16;
+    }
+    for (mine, theirs) in state.labels.iter_mut().zip(&cand.labels) {
+        for (m, &t) in mine.iter_mut().zip(theirs) {
+            *m = relabel[t as usize];
+        }
+    }
+    state.k = keep.min(cand.k) as u16;
+    state.left = state.labels[pivot].iter().filter(|&&l| l == FREE).count();
+    let other = (0..problem.shapes.len()).find(|&f| f != pivot)?;
+    // How often a step leaves the best motion: a few steps of the tail.
+    let stray = [0.05, 0.15, 0.3][rng.random_range(0..3)];
+    while state.left > 0 {
+        if stop.load(Ordering::Relaxed) {
+            return None;
+        }
+        let cells = state.free_pivot_cells();
+        let motions = ranked_motions(
+            problem,
+            pivot,
+            &cells,
+            other,
+            &state.labels[other],
+            (style.choice, style.divisor),
+        );
+        let pick = if motions.len() < 2 || !rng.random_bool(stray) {
+            0
+        } else {
+            rng.random_range(1..motions.len().min(top.max(2)))
+        };
+        state.step(motions.get(pick).map(|&m| (other, m)));
+    }
+    Some(state.into_candidate())
+}
+
 /// A greedy dissection under way: the labels given so far.
 #[derive(Clone)]
 struct State<'p> {

@@ -137,11 +137,14 @@ pub enum Via {
     /// A few touching pieces of the best dissection cut again, exactly,
     /// with fewer pieces.
     Regroup,
+    /// The tail of a dissection cut again by a randomized greedy, its
+    /// largest pieces kept.
+    Rebuild,
 }
 
 impl Via {
     /// A short name: `greedy`, `search`, `repair`, `coarse`, `sectors`,
-    /// `regroup`.
+    /// `regroup`, `rebuild`.
     pub fn name(self) -> &'static str {
         match self {
             Via::Greedy => "greedy",
@@ -150,6 +153,7 @@ impl Via {
             Via::Coarse => "coarse",
             Via::Sectors => "sectors",
             Via::Regroup => "regroup",
+            Via::Rebuild => "rebuild",
         }
     }
 }
@@ -321,6 +325,9 @@ fn stream(seed: u64, round: usize, level: usize, index: usize) -> ChaCha8Rng {
 
 /// Stream levels of the descent are kept apart from the ladder's.
 pub(crate) const DESCENT: usize = 1 << 20;
+
+/// Stream level of the tail rebuilds ([`anytime`]).
+pub(crate) const REBUILD: usize = 1 << 21;
 
 /// The solver form of `figures` under `options`.
 fn problem_of(figures: &[Figure], options: &Options) -> Result<Problem, SolveError> {

@@ -281,6 +281,7 @@ impl Observer for Shared<'_> {
                     Via::Coarse => Source::Coarse,
                     Via::Sectors => Source::Sectors,
                     Via::Regroup => Source::Regroup,
+                    Via::Rebuild => Source::Rebuild,
                     _ => Source::Search,
                 },
             ),
