@@ -139,8 +139,9 @@ pub(crate) fn pilot_until(
 /// search step): the `keep` largest pieces of `cand` (whose label names the
 /// same piece in every figure) stay, and what is left of every figure is
 /// cut again greedily, each step's motion of the first other figure drawn
-/// from the style's ranking (the best one half of the time, otherwise one
-/// of the next `top - 1`). The constructive steps draw nothing at random,
+/// from the style's ranking: the best, except with a probability drawn
+/// once per rebuild (0.05, 0.15 or 0.3) one of the next `top - 1`. The
+/// constructive steps draw nothing at random,
 /// so their tails are all alike; this looks at their neighbours. `None`
 /// when stopped.
 pub(crate) fn rebuild_until(
