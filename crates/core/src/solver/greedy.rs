@@ -141,9 +141,8 @@ pub(crate) fn pilot_until(
 /// cut again greedily, each step's motion of the first other figure drawn
 /// from the style's ranking: the best, except with a probability drawn
 /// once per rebuild (0.05, 0.15 or 0.3) one of the next `top - 1`. The
-/// constructive steps draw nothing at random,
-/// so their tails are all alike; this looks at their neighbours. `None`
-/// when stopped.
+/// constructive steps draw nothing at random, so their tails are all
+/// alike; this looks at their neighbours. `None` when stopped.
 pub(crate) fn rebuild_until(
     problem: &Problem,
     style: GreedyStyle,
