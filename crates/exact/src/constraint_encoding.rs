@@ -69,9 +69,25 @@ fn sizes(sat: &mut Sat<'_>, enc: &Encoding, c: &Constraints) {
     if min.is_none() && max.is_none() {
         return;
     }
-    // Count up to the largest threshold needed.
-    let top = max.map_or(0, |m| m + 1).max(min.unwrap_or(0)).max(1);
     for piece in &enc.cell[0] {
+        let n = piece.len();
+        // A bound the piece's cells cannot reach is no constraint (a
+        // maximum of `n` or more), and a minimum above `n` leaves the piece
+        // empty: the counter never counts past `n`, whatever the bounds
+        // (a maximum of `usize::MAX` once asked for that many variables).
+        let max = max.filter(|&m| m < n);
+        let min = min.filter(|&m| m >= 2);
+        if min.is_some_and(|m| m > n) {
+            for &x in piece {
+                sat.add(&[-x]);
+            }
+            continue;
+        }
+        // Count up to the largest threshold needed (at most n).
+        let top = max.map_or(0, |m| m + 1).max(min.unwrap_or(0));
+        if top == 0 {
+            continue;
+        }
         // s[c - 1] after cell j: at least c of cells 0..=j are in the piece
         // (both ways, so the counts are exact).
         let mut prev: Vec<i32> = Vec::new();
@@ -114,15 +130,11 @@ fn sizes(sat: &mut Sat<'_>, enc: &Encoding, c: &Constraints) {
             continue;
         }
         if let Some(m) = max {
-            if m < top {
-                sat.add(&[-prev[m]]);
-            }
+            sat.add(&[-prev[m]]);
         }
         if let Some(m) = min {
-            if m >= 2 {
-                // Non-empty (at least 1) → at least m.
-                sat.add(&[-prev[0], prev[m - 1]]);
-            }
+            // Non-empty (at least 1) → at least m.
+            sat.add(&[-prev[0], prev[m - 1]]);
         }
     }
 }

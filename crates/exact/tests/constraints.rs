@@ -81,6 +81,20 @@ fn piece_sizes_change_the_minimum() {
 }
 
 #[test]
+fn piece_sizes_beyond_the_figure_are_answered_without_counting_to_them() {
+    // The fuzzer's input: a maximum of usize::MAX once asked the size
+    // counter for that many variables (an allocation of 128 GB).
+    let figs = figures(LatticeKind::Square, &["##\n##\n", "####\n"]);
+    let c = Constraints::none().with_sizes(None, Some(usize::MAX));
+    assert_eq!(minimum(&figs, true, c), Some(2));
+    let c = Constraints::none().with_sizes(Some(1), Some(4));
+    assert_eq!(minimum(&figs, true, c), Some(2));
+    // A minimum of the whole area: the square in one piece, not a bar.
+    let c = Constraints::none().with_sizes(Some(4), Some(usize::MAX));
+    assert_eq!(minimum(&figs, false, c), None);
+}
+
+#[test]
 fn the_checkerboard_changes_the_minimum() {
     // An L tetromino and the same L one column to the right: one piece by a
     // translation that swaps colours, so two pieces with --checkerboard.
