@@ -600,6 +600,7 @@ pub(crate) fn bound<'py>(
         max_pieces,
         time_limit: crate::run::time_limit(time_limit).map_err(|m| error(py, Kind::Option, m))?,
         certify: false,
+        cube_proofs: None,
         threads: 1,
     };
     // The engine keeps the time limit; the watcher raises `stop` on Ctrl-C.

@@ -5,11 +5,12 @@
 //! which replays them with the independent checker `dissect-proof`.
 
 use std::collections::BTreeMap;
+use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
 use anyhow::{Context, Result};
-use dissect_exact::{Certificate, ExactEvent};
+use dissect_exact::{Certificate, CubeProofWriters, ExactEvent, ProofSink};
 
 use crate::output::write_atomic;
 use crate::{InputError, Status};
@@ -32,6 +33,76 @@ pub struct Writer {
     /// The figures and settings, for README.txt.
     about: String,
     written: Mutex<(BTreeMap<usize, Entry>, Option<String>)>,
+    /// The first error met writing a cube's proof as it went.
+    streamed: Arc<Mutex<Option<String>>>,
+}
+
+/// The files the cubes' proofs are written to as the solvers go:
+/// `kK.cube{j}.drat.part`, renamed to `kK.cube{j}.drat` when the
+/// certificate that lists the cube comes (a cube that was not refuted
+/// leaves its part behind until [`Writer::finish`] removes it).
+struct CubeFiles {
+    dir: PathBuf,
+    error: Arc<Mutex<Option<String>>>,
+}
+
+fn part(dir: &Path, k: usize, j: usize) -> PathBuf {
+    dir.join(format!("k{k}.cube{j}.drat.part"))
+}
+
+fn note(slot: &Mutex<Option<String>>, message: String) {
+    slot.lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .get_or_insert(message);
+}
+
+impl CubeProofWriters for CubeFiles {
+    fn open(&self, pieces: usize, cube: usize) -> Option<Box<dyn Write + Send>> {
+        let path = part(&self.dir, pieces, cube);
+        match std::fs::File::create(&path) {
+            Ok(file) => Some(Box::new(Noted {
+                file,
+                path,
+                error: self.error.clone(),
+            })),
+            Err(e) => {
+                // The proof is then kept in memory and written at the end.
+                note(&self.error, format!("cannot write {}: {e}", path.display()));
+                None
+            }
+        }
+    }
+}
+
+/// A proof file whose first write error is kept for [`Writer::finish`].
+struct Noted {
+    file: std::fs::File,
+    path: PathBuf,
+    error: Arc<Mutex<Option<String>>>,
+}
+
+impl Noted {
+    fn noted<T>(&self, r: std::io::Result<T>) -> std::io::Result<T> {
+        if let Err(e) = &r {
+            note(
+                &self.error,
+                format!("cannot write {}: {e}", self.path.display()),
+            );
+        }
+        r
+    }
+}
+
+impl Write for Noted {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        let r = self.file.write(buf);
+        self.noted(r)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        let r = self.file.sync_all();
+        self.noted(r)
+    }
 }
 
 impl Writer {
@@ -51,7 +122,18 @@ impl Writer {
             dir: dir.to_path_buf(),
             about,
             written: Mutex::new((BTreeMap::new(), None)),
+            streamed: Arc::new(Mutex::new(None)),
         })
+    }
+
+    /// Writers that take the cubes' proofs to files as the solvers go, so
+    /// that no proof is held in memory (for
+    /// `BoundConfig::cube_proofs`).
+    pub fn cube_proofs(&self) -> ProofSink {
+        ProofSink::new(Arc::new(CubeFiles {
+            dir: self.dir.clone(),
+            error: self.streamed.clone(),
+        }))
     }
 
     /// Writes the certificate an event carries (errors are kept for
@@ -122,10 +204,30 @@ impl Writer {
                 &self.dir.join(format!("k{k}.cube{j}.cnf")),
                 cube.formula.as_bytes(),
             )?;
-            write_atomic(
-                &self.dir.join(format!("k{k}.cube{j}.drat")),
-                cube.proof.as_bytes(),
-            )?;
+            let drat = self.dir.join(format!("k{k}.cube{j}.drat"));
+            match &cube.proof {
+                Some(proof) => write_atomic(&drat, proof.as_bytes())?,
+                None => std::fs::rename(part(&self.dir, k, j), &drat)
+                    .with_context(|| format!("cannot write {}", drat.display()))?,
+            }
+        }
+        // The cubes of an earlier certificate for K with more of them.
+        for j in c.cubes.len().. {
+            let (cnf, drat) = (
+                self.dir.join(format!("k{k}.cube{j}.cnf")),
+                self.dir.join(format!("k{k}.cube{j}.drat")),
+            );
+            if !cnf.exists() && !drat.exists() {
+                break;
+            }
+            for stale in [cnf, drat] {
+                match std::fs::remove_file(&stale) {
+                    Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                        return Err(e).with_context(|| format!("cannot remove {}", stale.display()))
+                    }
+                    _ => {}
+                }
+            }
         }
         write_atomic(&self.dir.join(format!("k{k}.cubes")), cover.as_bytes())
     }
@@ -192,10 +294,19 @@ impl Writer {
         s
     }
 
-    /// The certificates written, or the first error met writing one.
+    /// The certificates written, or the first error met writing one. The
+    /// proofs of cubes that were never refuted (`*.drat.part`) are removed.
     pub fn finish(&self) -> Result<Vec<usize>> {
         let state = self.written.lock().unwrap_or_else(|e| e.into_inner());
-        match &state.1 {
+        if let Ok(entries) = std::fs::read_dir(&self.dir) {
+            for entry in entries.flatten() {
+                if entry.file_name().to_string_lossy().ends_with(".drat.part") {
+                    let _ = std::fs::remove_file(entry.path());
+                }
+            }
+        }
+        let streamed = self.streamed.lock().unwrap_or_else(|e| e.into_inner());
+        match state.1.as_ref().or(streamed.as_ref()) {
             Some(e) => Err(anyhow::anyhow!("{e}")),
             None => Ok(state.0.keys().copied().collect()),
         }

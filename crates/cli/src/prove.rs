@@ -154,13 +154,6 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         );
         return Ok(Status::Ok);
     }
-    let config = BoundConfig {
-        mirror: !args.no_mirror,
-        max_pieces: args.max_pieces,
-        time_limit: args.time_limit.unwrap_or_default(),
-        certify: args.certificate.is_some(),
-        threads: args.threads,
-    };
     let names = names(&args.figures);
     let certificates = match &args.certificate {
         Some(dir) => Some(crate::certificate::Writer::new(
@@ -170,6 +163,14 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
             !args.no_mirror && args.lattice.lattice().supports_mirror(),
         )?),
         None => None,
+    };
+    let config = BoundConfig {
+        mirror: !args.no_mirror,
+        max_pieces: args.max_pieces,
+        time_limit: args.time_limit.unwrap_or_default(),
+        certify: args.certificate.is_some(),
+        cube_proofs: certificates.as_ref().map(|w| w.cube_proofs()),
+        threads: args.threads,
     };
     let observer = Lines {
         quiet: args.quiet,

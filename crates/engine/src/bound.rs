@@ -43,6 +43,9 @@ pub struct BoundConfig {
     /// Record every refutation's formula and DRAT proof (sent as
     /// [`ExactEvent::Certified`]).
     pub certify: bool,
+    /// With `certify`: where the cubes' DRAT proofs are written as the
+    /// solvers go (see `dissect_exact::ExactOptions::cube_proofs`).
+    pub cube_proofs: Option<dissect_exact::ProofSink>,
     /// Threads for cube-and-conquer on each SAT question (1: one solver;
     /// see `dissect_exact::ExactOptions::cube_threads`).
     pub threads: usize,
@@ -55,6 +58,7 @@ impl Default for BoundConfig {
             max_pieces: None,
             time_limit: TimeLimit::NONE,
             certify: false,
+            cube_proofs: None,
             threads: 1,
         }
     }
@@ -112,6 +116,7 @@ pub fn bound(
         deadline,
         max_pieces: config.max_pieces,
         certify: config.certify,
+        cube_proofs: config.cube_proofs.clone(),
         max_encoding_bytes: BOUND_MAX_BYTES,
         sat_max_cells: dissect_exact::bound::SAT_MAX_CELLS,
         cube_threads: config.threads.max(1),

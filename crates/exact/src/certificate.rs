@@ -10,6 +10,7 @@
 //! of the whole formula proves that none exists.
 
 use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
 
 use crate::sat_backend::Sat;
 
@@ -57,14 +58,62 @@ pub struct CubeProof {
     /// Clauses of `formula`.
     pub clauses: usize,
     /// The DRAT proof that the base and `formula` together are
-    /// unsatisfiable.
-    pub proof: String,
+    /// unsatisfiable; `None` when it went to the writer of
+    /// [`ExactOptions::cube_proofs`](crate::ExactOptions::cube_proofs)
+    /// (then complete there, ended by the empty clause).
+    pub proof: Option<String>,
+    /// The lemmas of the proof (lines that are not deletions).
+    pub lemmas: usize,
     /// Variables of the base and `formula` together.
     pub vars: usize,
     /// Connectivity cuts among the clauses.
     pub cuts: usize,
     /// Whether the connectivity encoding is among the clauses.
     pub connectivity: bool,
+}
+
+/// Writers for the DRAT proofs of cube-and-conquer's cubes, so that no
+/// proof is held in memory: the solver of cube `cube` of the refutation of
+/// `pieces` pieces writes its proof to `open(pieces, cube)` as it goes.
+/// The proof there is whole once the certificate that lists the cube
+/// ([`ExactEvent::Certified`](crate::ExactEvent::Certified)) comes;
+/// a cube that is not refuted leaves an incomplete proof behind, and the
+/// same cube of a later pass for the same `pieces` opens its writer again.
+pub trait CubeProofWriters: Send + Sync {
+    /// A writer for the proof of one cube; `None`: keep that proof in
+    /// memory ([`CubeProof::proof`]).
+    fn open(&self, pieces: usize, cube: usize) -> Option<Box<dyn std::io::Write + Send>>;
+}
+
+/// A shared [`CubeProofWriters`], for [`crate::ExactOptions::cube_proofs`].
+#[derive(Clone)]
+pub struct ProofSink(Arc<dyn CubeProofWriters>);
+
+impl ProofSink {
+    /// The sink of `writers`.
+    pub fn new(writers: Arc<dyn CubeProofWriters>) -> ProofSink {
+        ProofSink(writers)
+    }
+
+    pub(crate) fn open(
+        &self,
+        pieces: usize,
+        cube: usize,
+    ) -> Option<Box<dyn std::io::Write + Send>> {
+        self.0.open(pieces, cube)
+    }
+}
+
+impl std::fmt::Debug for ProofSink {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("ProofSink(..)")
+    }
+}
+
+impl PartialEq for ProofSink {
+    fn eq(&self, other: &ProofSink) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
 }
 
 /// The certificate of an UNSAT answer of `sat` (recording) for `k` pieces
@@ -128,7 +177,7 @@ impl Certificate {
         if self.cubes.is_empty() {
             count(&self.proof)
         } else {
-            self.cubes.iter().map(|c| count(&c.proof)).sum()
+            self.cubes.iter().map(|c| c.lemmas).sum()
         }
     }
 }

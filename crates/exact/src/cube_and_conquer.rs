@@ -76,6 +76,7 @@ pub(crate) struct Cubes<'a> {
     pub upper: &'a AtomicUsize,
     pub style: MotionEncoding,
     pub certify: bool,
+    pub sink: Option<&'a crate::ProofSink>,
     pub threads: usize,
 }
 
@@ -145,7 +146,7 @@ impl Cubes<'_> {
         });
         let answers = answers.into_inner().unwrap_or_else(|e| e.into_inner());
         let spent = spent_all.load(Ordering::SeqCst);
-        (self.gather(k, cube, answers, base.0, start), spent)
+        (self.gather(k, answers, base.0, start), spent)
     }
 
     /// One worker: takes the next cube until none is left or `abort`
@@ -165,7 +166,8 @@ impl Cubes<'_> {
                 break;
             }
             let began = Instant::now();
-            let (answer, spent) = self.one(k, cube[j], (base_clauses, conflicts), abort, deadline);
+            let (answer, spent) =
+                self.one(k, (j, cube[j]), (base_clauses, conflicts), abort, deadline);
             self.cutting.observer.on_event(&ExactEvent::Cube {
                 pieces: k,
                 index: j,
@@ -186,7 +188,6 @@ impl Cubes<'_> {
     fn gather(
         &self,
         k: usize,
-        cube: &[i32],
         answers: Vec<Option<Answer>>,
         base: Option<String>,
         start: Instant,
@@ -230,7 +231,6 @@ impl Cubes<'_> {
             }
             _ => None,
         };
-        debug_assert!(!self.certify || certificate.is_some() || cube.is_empty());
         Pass::Unsat {
             cuts,
             seconds: start.elapsed().as_secs_f64(),
@@ -238,13 +238,16 @@ impl Cubes<'_> {
         }
     }
 
-    /// Cube `literal`: the encoding again in a solver of its own (the
-    /// same variables, as `encode` is deterministic), the unit, then the
-    /// connectivity loop. Returns the answer and the conflicts spent.
+    /// Cube `index` (its literal `literal`): the encoding again in a
+    /// solver of its own (the same variables, as `encode` is
+    /// deterministic), the unit, then the connectivity loop. Returns the
+    /// answer and the conflicts spent. When certifying, only the clauses
+    /// added after the base formula are recorded, and the proof goes to
+    /// the sink's writer when there is one.
     fn one(
         &self,
         k: usize,
-        literal: i32,
+        (index, literal): (usize, i32),
         (base_clauses, conflicts): (usize, Option<u64>),
         abort: &AtomicBool,
         deadline: Option<Instant>,
@@ -253,10 +256,17 @@ impl Cubes<'_> {
             || abort.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d);
         let mut sat = Sat::new(abort, Some((self.upper, k)));
         sat.set_conflict_limit(conflicts);
-        if self.certify {
-            sat.record();
-            sat.record_proof();
-        }
+        let streamed = self.certify
+            && match self.sink.and_then(|s| s.open(k, index)) {
+                Some(out) => {
+                    sat.record_proof_to(out);
+                    true
+                }
+                None => {
+                    sat.record_proof();
+                    false
+                }
+            };
         let inst = self.cutting.inst;
         let Some(enc) = encode(
             inst,
@@ -271,6 +281,9 @@ impl Cubes<'_> {
         };
         add_groups(&mut sat, &enc.cube, self.threads * CUBES_PER_THREAD);
         debug_assert_eq!(sat.clauses(), base_clauses, "encode is deterministic");
+        if self.certify {
+            sat.record();
+        }
         sat.add(&[literal]);
         let answer = self
             .cutting
@@ -280,21 +293,28 @@ impl Cubes<'_> {
             Connected::Unknown => Answer::Unknown,
             Connected::Found(p) => Answer::Found(p),
             Connected::Unsat { cuts, connected } => {
-                let proof = if self.certify {
-                    sat.dimacs_from(base_clauses).zip(sat.proof()).map(
-                        |((formula, clauses), proof)| CubeProof {
-                            literal,
-                            formula,
-                            clauses,
-                            proof,
-                            vars: sat.vars(),
-                            cuts,
-                            connectivity: connected,
-                        },
-                    )
-                } else {
+                let proof = if !self.certify {
                     None
+                } else if streamed {
+                    sat.end_proof_stream().map(|lemmas| (None, lemmas))
+                } else {
+                    sat.proof().map(|p| {
+                        let lemmas = p.lines().filter(|l| !l.starts_with('d')).count();
+                        (Some(p), lemmas)
+                    })
                 };
+                let proof = proof
+                    .zip(sat.dimacs())
+                    .map(|((proof, lemmas), (formula, clauses))| CubeProof {
+                        literal,
+                        formula,
+                        clauses,
+                        proof,
+                        lemmas,
+                        vars: sat.vars(),
+                        cuts,
+                        connectivity: connected,
+                    });
                 Answer::Unsat(proof, cuts)
             }
         };

@@ -49,7 +49,7 @@ pub mod search;
 pub(crate) mod shift_encoding;
 
 pub use bound::{cheap_bound, Bound, Reason};
-pub use certificate::{Certificate, CubeProof};
+pub use certificate::{Certificate, CubeProof, CubeProofWriters, ProofSink};
 pub use enumerate::{enumerate, EnumerateEvent, EnumerateObserver, EnumerateOptions, Enumeration};
 pub use motion::MotionSet;
 pub use placement_encoding::{EncodingSize, MotionEncoding};

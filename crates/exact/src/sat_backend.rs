@@ -28,7 +28,46 @@ struct StopCheck<'a> {
     /// Give up once `conflicts` reaches this.
     conflict_limit: Option<u64>,
     /// The DRAT proof so far (learnt clauses, `d` deletions), when recording.
-    proof: Option<String>,
+    proof: Option<ProofOut>,
+}
+
+/// Where a recorded proof goes.
+enum ProofOut {
+    /// Kept as text, for [`Sat::proof`].
+    Memory(String),
+    /// Written line by line as the solver goes ([`Sat::record_proof_to`]).
+    Stream {
+        out: std::io::BufWriter<Box<dyn std::io::Write + Send>>,
+        /// The line being written.
+        line: String,
+        lemmas: usize,
+        /// A write failed: the proof is incomplete.
+        failed: bool,
+    },
+}
+
+impl ProofOut {
+    fn push(&mut self, prefix: &str, c: &[Lit]) {
+        match self {
+            ProofOut::Memory(text) => drat_line(text, prefix, c),
+            ProofOut::Stream {
+                out,
+                line,
+                lemmas,
+                failed,
+            } => {
+                if *failed {
+                    return;
+                }
+                line.clear();
+                drat_line(line, prefix, c);
+                if prefix.is_empty() {
+                    *lemmas += 1;
+                }
+                *failed = std::io::Write::write_all(out, line.as_bytes()).is_err();
+            }
+        }
+    }
 }
 
 /// Appends `c` to a DRAT text as one line (`prefix` is `""` or `"d "`).
@@ -47,14 +86,14 @@ impl batsat::Callbacks for StopCheck<'_> {
         if kind == ClauseKind::Learnt {
             self.conflicts += 1;
             if let Some(proof) = &mut self.proof {
-                drat_line(proof, "", c);
+                proof.push("", c);
             }
         }
     }
 
     fn on_delete_clause(&mut self, c: &[Lit]) {
         if let Some(proof) = &mut self.proof {
-            drat_line(proof, "d ", c);
+            proof.push("d ", c);
         }
     }
 
@@ -112,16 +151,55 @@ impl<'a> Sat<'a> {
     /// proof, for [`Sat::proof`]; call it with [`Sat::record`], before the
     /// first clause.
     pub fn record_proof(&mut self) {
-        self.solver.cb_mut().proof.get_or_insert_with(String::new);
+        self.solver
+            .cb_mut()
+            .proof
+            .get_or_insert_with(|| ProofOut::Memory(String::new()));
+    }
+
+    /// Like [`Sat::record_proof`], but the proof is written to `out` as
+    /// the solver goes (nothing of it is kept); end it with
+    /// [`Sat::end_proof_stream`].
+    pub fn record_proof_to(&mut self, out: Box<dyn std::io::Write + Send>) {
+        self.solver.cb_mut().proof = Some(ProofOut::Stream {
+            out: std::io::BufWriter::with_capacity(1 << 20, out),
+            line: String::new(),
+            lemmas: 0,
+            failed: false,
+        });
     }
 
     /// The DRAT proof recorded since [`Sat::record_proof`], ended by the
     /// empty clause: after a solve that answered "unsatisfiable" it refutes
-    /// [`Sat::dimacs`].
+    /// [`Sat::dimacs`]. `None` when not recording in memory.
     pub fn proof(&self) -> Option<String> {
-        let mut text = self.solver.cb().proof.clone()?;
+        let ProofOut::Memory(text) = self.solver.cb().proof.as_ref()? else {
+            return None;
+        };
+        let mut text = text.clone();
         text.push_str("0\n");
         Some(text)
+    }
+
+    /// Ends the proof of [`Sat::record_proof_to`] with the empty clause,
+    /// flushes and closes its writer; its lemmas (the empty clause among
+    /// them), or `None` when a write
+    /// failed (the proof written is incomplete) or there was no stream.
+    pub fn end_proof_stream(&mut self) -> Option<usize> {
+        use std::io::Write;
+        let ProofOut::Stream {
+            mut out,
+            lemmas,
+            failed,
+            ..
+        } = self.solver.cb_mut().proof.take()?
+        else {
+            return None;
+        };
+        if failed || out.write_all(b"0\n").is_err() || out.flush().is_err() {
+            return None;
+        }
+        Some(lemmas + 1)
     }
 
     /// The clauses recorded since [`Sat::record`] as a DIMACS CNF (the header
@@ -130,26 +208,6 @@ impl<'a> Sat<'a> {
         let body = self.recorded.as_ref()?;
         let count = body.lines().count();
         Some((format!("p cnf {} {count}\n{body}", self.vars()), count))
-    }
-
-    /// The recorded clauses from the `first`-th on (counted from 0) as a
-    /// DIMACS CNF whose header counts all variables: what was added after
-    /// a base formula of `first` clauses.
-    pub fn dimacs_from(&self, first: usize) -> Option<(String, usize)> {
-        let body = self.recorded.as_ref()?;
-        let mut start = 0;
-        for _ in 0..first {
-            match body[start..].find('\n') {
-                Some(i) => start += i + 1,
-                None => {
-                    start = body.len();
-                    break;
-                }
-            }
-        }
-        let tail = &body[start..];
-        let count = tail.lines().count();
-        Some((format!("p cnf {} {count}\n{tail}", self.vars()), count))
     }
 
     /// A fresh variable.

@@ -70,6 +70,10 @@ pub struct ExactOptions {
     /// then also refuted by SAT at `L - 1` pieces, so that it has a
     /// certificate when the encoding refutes it.
     pub certify: bool,
+    /// With [`ExactOptions::certify`] and cube-and-conquer: where each
+    /// cube's DRAT proof is written as the solver goes (`None`: every
+    /// proof is kept in memory and sent in its certificate).
+    pub cube_proofs: Option<crate::ProofSink>,
     /// How motions are encoded ([`MotionEncoding::Auto`]: the direct
     /// encoding unless the shift chain is much smaller; always direct
     /// under constraints).
@@ -137,6 +141,7 @@ impl Default for ExactOptions {
             max_encoding_bytes: DEFAULT_MAX_ENCODING_BYTES,
             constraints: None,
             certify: false,
+            cube_proofs: None,
             motion_encoding: MotionEncoding::Auto,
             sat_max_cells: crate::bound::FULL_GRAPH_MAX_CELLS,
             cube_threads: 1,
@@ -283,6 +288,7 @@ struct Context<'a> {
     max_bytes: u64,
     constraints: Option<&'a dissect_puzzle::Constraints>,
     certify: bool,
+    cube_proofs: Option<&'a crate::ProofSink>,
     motion_encoding: MotionEncoding,
     cube_threads: usize,
     /// Conflicts spent so far.
@@ -458,6 +464,7 @@ impl Context<'_> {
                 upper: self.upper,
                 style,
                 certify: self.certify,
+                sink: self.cube_proofs,
                 threads: self.cube_threads,
             };
             let cover = crate::cube_and_conquer::add_groups(
@@ -643,6 +650,7 @@ pub fn search(
         max_bytes: options.max_encoding_bytes,
         constraints: options.constraints.as_ref(),
         certify: options.certify,
+        cube_proofs: options.cube_proofs.as_ref(),
         motion_encoding: options.motion_encoding,
         cube_threads: options.cube_threads,
         spent: std::cell::Cell::new(0),

@@ -3,13 +3,15 @@
 //! `dissect-proof` verifies, and no certificate ever claims a piece count
 //! that brute force can reach.
 
+use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicBool, AtomicUsize};
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
 use dissect_core::io::parse_figure;
 use dissect_core::{Figure, LatticeKind};
 use dissect_exact::{
-    search, Certificate, ExactEvent, ExactObserver, ExactOptions, Mode, MotionEncoding, Reason,
+    search, Certificate, CubeProofWriters, ExactEvent, ExactObserver, ExactOptions, Mode,
+    MotionEncoding, ProofSink, Reason,
 };
 
 struct Collect(Mutex<Vec<Certificate>>, Mutex<Vec<usize>>);
@@ -262,7 +264,12 @@ fn cube_and_conquer_certificates_verify_and_need_every_part() {
         .map(|c| {
             let cnf = dissect_proof::Cnf::parse(&c.formula).expect("a cube parses");
             assert_eq!(cnf.clauses()[0], vec![c.literal], "the unit first");
-            let proof = dissect_proof::Proof::parse(&c.proof).expect("a proof parses");
+            let text = c.proof.as_deref().expect("kept in memory without a sink");
+            assert_eq!(
+                text.lines().filter(|l| !l.starts_with('d')).count(),
+                c.lemmas
+            );
+            let proof = dissect_proof::Proof::parse(text).expect("a proof parses");
             (cnf, proof)
         })
         .collect();
@@ -302,4 +309,91 @@ fn cube_and_conquer_certificates_verify_and_need_every_part() {
         .expect("the cover is a clause");
     let cnf = dissect_proof::Cnf::parse(&without_clause(&k2.formula, at)).expect("parses");
     assert!(dissect_proof::check_cubes(&cnf, &cover, &parts).is_err());
+}
+
+/// The bytes written per (pieces, cube).
+type Written = Arc<Mutex<BTreeMap<(usize, usize), Vec<u8>>>>;
+
+/// Proof writers into shared buffers, by (pieces, cube).
+#[derive(Default)]
+struct Buffers(Written);
+
+struct Into(Written, (usize, usize));
+
+impl std::io::Write for Into {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        let mut all = self.0.lock().unwrap();
+        all.get_mut(&self.1).expect("opened").extend_from_slice(buf);
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+impl CubeProofWriters for Buffers {
+    fn open(&self, pieces: usize, cube: usize) -> Option<Box<dyn std::io::Write + Send>> {
+        // A cube opened again starts afresh.
+        self.0.lock().unwrap().insert((pieces, cube), Vec::new());
+        Some(Box::new(Into(self.0.clone(), (pieces, cube))))
+    }
+}
+
+/// Cube-and-conquer with a proof sink: no cube's proof is held in the
+/// certificate, each went whole to its writer, and the streamed proofs
+/// verify against the base and the cubes' clauses.
+#[test]
+fn cube_proofs_stream_to_their_writers_and_verify() {
+    let figs = figures(LatticeKind::Square, &["#.#\n###", "#####"]);
+    let buffers = Arc::new(Buffers::default());
+    let options = ExactOptions {
+        mode: Mode::LowerBound,
+        max_pieces: Some(2),
+        certify: true,
+        cube_threads: 2,
+        cube_proofs: Some(ProofSink::new(buffers.clone())),
+        ..ExactOptions::default()
+    };
+    let collect = Collect(Mutex::new(Vec::new()), Mutex::new(Vec::new()));
+    let out = search(
+        &figs,
+        &options,
+        &AtomicBool::new(false),
+        &AtomicUsize::new(usize::MAX),
+        &collect,
+    )
+    .expect("search runs");
+    assert_eq!(out.lower_bound.value, 3);
+    let certs = collect.0.into_inner().unwrap();
+    let k2 = certs.iter().find(|c| c.pieces == 2).expect("k2 certified");
+    assert!(k2.cubes.len() >= 2, "{} cubes", k2.cubes.len());
+    let written = buffers.0.lock().unwrap();
+    let base = dissect_proof::Cnf::parse(&k2.formula).expect("the base parses");
+    let cover: Vec<i32> = k2.cubes.iter().map(|c| c.literal).collect();
+    let parts: Vec<(dissect_proof::Cnf, dissect_proof::Proof)> = k2
+        .cubes
+        .iter()
+        .enumerate()
+        .map(|(j, c)| {
+            assert!(c.proof.is_none(), "cube {j}: its proof went to the writer");
+            let text = String::from_utf8(written[&(2, j)].clone()).expect("text DRAT");
+            assert!(text.ends_with("0\n"), "cube {j}: ended by the empty clause");
+            assert_eq!(
+                text.lines().filter(|l| !l.starts_with('d')).count(),
+                c.lemmas
+            );
+            let cnf = dissect_proof::Cnf::parse(&c.formula).expect("a cube parses");
+            assert_eq!(cnf.clauses()[0], vec![c.literal], "the unit first");
+            (
+                cnf,
+                dissect_proof::Proof::parse(&text).expect("a proof parses"),
+            )
+        })
+        .collect();
+    let verified = dissect_proof::check_cubes(&base, &cover, &parts).expect("verified");
+    assert_eq!(verified.len(), cover.len());
+    assert_eq!(
+        k2.lemmas(),
+        k2.cubes.iter().map(|c| c.lemmas).sum::<usize>()
+    );
 }
