@@ -432,54 +432,58 @@ pub fn check(args: CheckProofArgs) -> Result<Status> {
 }
 
 /// Checks a cube-and-conquer certificate `kK.cnf`, `kK.cubes`,
-/// `kK.cube{j}.cnf`/`.drat` (the cubes read until the first missing one;
-/// the checker then says how many are missing). `Ok(false)`: it failed
-/// (printed).
+/// `kK.cube{j}.cnf`/`.drat` (the cubes counted until the first missing one;
+/// the checker then says how many are missing), one cube at a time so that
+/// only one cube's proof is held. `Ok(false)`: it failed (printed).
 fn check_cubed(k: usize, cnf_path: &Path, cover_path: &Path) -> Result<bool> {
     let dir = cnf_path.parent().unwrap_or(Path::new("."));
     let base = dissect_proof::Cnf::parse(&read(cnf_path)?)
         .map_err(|e| located(e, cnf_path, cover_path))?;
     let cover = dissect_proof::parse_cover(&read(cover_path)?)
         .map_err(|e| InputError(format!("{}: {e}", cover_path.display())))?;
-    let mut cubes = Vec::new();
-    for j in 0.. {
-        let (c, p) = (
+    let files = |j: usize| {
+        (
             dir.join(format!("k{k}.cube{j}.cnf")),
             dir.join(format!("k{k}.cube{j}.drat")),
-        );
-        if !c.is_file() || !p.is_file() {
-            break;
-        }
+        )
+    };
+    let present = (0..)
+        .take_while(|&j| {
+            let (c, p) = files(j);
+            c.is_file() && p.is_file()
+        })
+        .count();
+    if let Err(e) = dissect_proof::check_cover(&base, &cover, present) {
+        println!("k{k}: FAILED: {}: {e}", cover_path.display());
+        return Ok(false);
+    }
+    let (mut lemmas, mut rat, mut deletions) = (0, 0, 0);
+    for (j, &literal) in cover.iter().enumerate() {
+        let (c, p) = files(j);
         let cnf = dissect_proof::Cnf::parse(&read(&c)?).map_err(|e| located(e, &c, &p))?;
         let proof = dissect_proof::Proof::parse(&read(&p)?).map_err(|e| located(e, &c, &p))?;
-        cubes.push((cnf, proof));
-    }
-    match dissect_proof::check_cubes(&base, &cover, &cubes) {
-        Ok(v) => {
-            println!(
-                "k{k}: verified: no dissection into at most {k} pieces ({} clauses, {} cubes, {} lemmas, {} RAT, {} deletions)",
-                base.clauses().len(),
-                v.len(),
-                v.iter().map(|v| v.lemmas).sum::<usize>(),
-                v.iter().map(|v| v.rat_lemmas).sum::<usize>(),
-                v.iter().map(|v| v.deletions).sum::<usize>()
-            );
-            Ok(true)
-        }
-        Err((cube, e)) => {
-            let place = match cube {
-                None => cover_path.display().to_string(),
-                Some(j) => match e.location().0 {
-                    dissect_proof::Source::Proof => {
-                        dir.join(format!("k{k}.cube{j}.drat")).display().to_string()
-                    }
-                    _ => dir.join(format!("k{k}.cube{j}.cnf")).display().to_string(),
-                },
-            };
-            println!("k{k}: FAILED: {place}: {e}");
-            Ok(false)
+        match dissect_proof::check_cube(&base, literal, &cnf, &proof) {
+            Ok(v) => {
+                lemmas += v.lemmas;
+                rat += v.rat_lemmas;
+                deletions += v.deletions;
+            }
+            Err(e) => {
+                let place = match e.location().0 {
+                    dissect_proof::Source::Proof => p,
+                    _ => c,
+                };
+                println!("k{k}: FAILED: {}: {e}", place.display());
+                return Ok(false);
+            }
         }
     }
+    println!(
+        "k{k}: verified: no dissection into at most {k} pieces ({} clauses, {} cubes, {lemmas} lemmas, {rat} RAT, {deletions} deletions)",
+        base.clauses().len(),
+        cover.len(),
+    );
+    Ok(true)
 }
 
 fn plural(n: usize) -> String {

@@ -72,33 +72,50 @@ pub fn check_cubes(
     cover: &[i32],
     cubes: &[(Cnf, Proof)],
 ) -> Result<Vec<Verified>, (Option<usize>, ProofError)> {
+    check_cover(base, cover, cubes.len()).map_err(|e| (None, e))?;
+    cubes
+        .iter()
+        .zip(cover)
+        .enumerate()
+        .map(|(j, ((extra, proof), &literal))| {
+            check_cube(base, literal, extra, proof).map_err(|e| (Some(j), e))
+        })
+        .collect()
+}
+
+/// The part of [`check_cubes`] about the cover: it is a clause of `base`,
+/// with one literal per cube (`cubes` of them). With [`check_cube`] for
+/// each cube, a certificate too large to hold whole is checked a cube at
+/// a time.
+pub fn check_cover(base: &Cnf, cover: &[i32], cubes: usize) -> Result<(), ProofError> {
     let wanted = sorted(cover);
     if !base.clauses().iter().any(|c| sorted(c) == wanted) {
-        return Err((
-            None,
-            ProofError::NotCovered {
-                cover: crate::check::dimacs(cover),
-            },
-        ));
+        return Err(ProofError::NotCovered {
+            cover: crate::check::dimacs(cover),
+        });
     }
-    if cubes.len() != cover.len() {
-        return Err((
-            None,
-            ProofError::MissingCube {
-                cubes: cubes.len(),
-                literals: cover.len(),
-            },
-        ));
+    if cubes != cover.len() {
+        return Err(ProofError::MissingCube {
+            cubes,
+            literals: cover.len(),
+        });
     }
-    let mut out = Vec::with_capacity(cubes.len());
-    for (j, ((extra, proof), &literal)) in cubes.iter().zip(cover).enumerate() {
-        if !extra.clauses().iter().any(|c| c.as_slice() == [literal]) {
-            return Err((Some(j), ProofError::NoUnit { literal }));
-        }
-        let mut clauses = base.clauses().to_vec();
-        clauses.extend(extra.clauses().iter().cloned());
-        let whole = Cnf::new(base.vars().max(extra.vars()), clauses);
-        out.push(check(&whole, proof).map_err(|e| (Some(j), e))?);
+    Ok(())
+}
+
+/// The part of [`check_cubes`] about one cube: its clauses `extra` hold
+/// the unit of `literal`, and `proof` refutes `base` with them.
+pub fn check_cube(
+    base: &Cnf,
+    literal: i32,
+    extra: &Cnf,
+    proof: &Proof,
+) -> Result<Verified, ProofError> {
+    if !extra.clauses().iter().any(|c| c.as_slice() == [literal]) {
+        return Err(ProofError::NoUnit { literal });
     }
-    Ok(out)
+    let mut clauses = base.clauses().to_vec();
+    clauses.extend(extra.clauses().iter().cloned());
+    let whole = Cnf::new(base.vars().max(extra.vars()), clauses);
+    check(&whole, proof)
 }

@@ -22,7 +22,7 @@ mod cubes;
 mod parse;
 
 pub use check::{check, Verified};
-pub use cubes::{check_cubes, parse_cover};
+pub use cubes::{check_cover, check_cube, check_cubes, parse_cover};
 pub use parse::{Cnf, Proof, Step};
 
 /// Which of the two texts an error is in.
