@@ -226,19 +226,17 @@ fn shift_chain_refutations_are_certified_and_need_their_clauses() {
     assert!(failed, "no clause of {} was needed", k2.clauses);
 }
 
-/// Cube-and-conquer (two threads): the certificate is the base formula and
-/// one proof per cube; the checker verifies it, and fails when a clause of
-/// the base is removed (some clause), when a cube is missing, or when the
-/// cover is no clause of the base.
-#[test]
-fn cube_and_conquer_certificates_verify_and_need_every_part() {
-    // A U into a bar: 3 pieces (brute force, tests/exact.rs).
+/// The certificate of "no 2-piece dissection" of a U into a bar (3 pieces
+/// by brute force, tests/exact.rs) by cube-and-conquer on two threads,
+/// the cubes' proofs going to `sink` when there is one.
+fn cubed_u_to_bar(sink: Option<ProofSink>) -> Certificate {
     let figs = figures(LatticeKind::Square, &["#.#\n###", "#####"]);
     let options = ExactOptions {
         mode: Mode::LowerBound,
         max_pieces: Some(2),
         certify: true,
         cube_threads: 2,
+        cube_proofs: sink,
         ..ExactOptions::default()
     };
     let collect = Collect(Mutex::new(Vec::new()), Mutex::new(Vec::new()));
@@ -252,8 +250,21 @@ fn cube_and_conquer_certificates_verify_and_need_every_part() {
     .expect("search runs");
     assert_eq!(out.lower_bound.value, 3);
     let certs = collect.0.into_inner().unwrap();
-    let k2 = certs.iter().find(|c| c.pieces == 2).expect("k2 certified");
+    let k2 = certs
+        .into_iter()
+        .find(|c| c.pieces == 2)
+        .expect("k2 certified");
     assert!(k2.cubes.len() >= 2, "{} cubes", k2.cubes.len());
+    k2
+}
+
+/// Cube-and-conquer (two threads): the certificate is the base formula and
+/// one proof per cube; the checker verifies it, and fails when a clause of
+/// the base is removed (some clause), when a cube is missing, or when the
+/// cover is no clause of the base.
+#[test]
+fn cube_and_conquer_certificates_verify_and_need_every_part() {
+    let k2 = cubed_u_to_bar(None);
     assert!(k2.proof.is_empty());
     let base = dissect_proof::Cnf::parse(&k2.formula).expect("the base parses");
     assert_eq!(base.clauses().len(), k2.clauses);
@@ -344,29 +355,8 @@ impl CubeProofWriters for Buffers {
 /// verify against the base and the cubes' clauses.
 #[test]
 fn cube_proofs_stream_to_their_writers_and_verify() {
-    let figs = figures(LatticeKind::Square, &["#.#\n###", "#####"]);
     let buffers = Arc::new(Buffers::default());
-    let options = ExactOptions {
-        mode: Mode::LowerBound,
-        max_pieces: Some(2),
-        certify: true,
-        cube_threads: 2,
-        cube_proofs: Some(ProofSink::new(buffers.clone())),
-        ..ExactOptions::default()
-    };
-    let collect = Collect(Mutex::new(Vec::new()), Mutex::new(Vec::new()));
-    let out = search(
-        &figs,
-        &options,
-        &AtomicBool::new(false),
-        &AtomicUsize::new(usize::MAX),
-        &collect,
-    )
-    .expect("search runs");
-    assert_eq!(out.lower_bound.value, 3);
-    let certs = collect.0.into_inner().unwrap();
-    let k2 = certs.iter().find(|c| c.pieces == 2).expect("k2 certified");
-    assert!(k2.cubes.len() >= 2, "{} cubes", k2.cubes.len());
+    let k2 = cubed_u_to_bar(Some(ProofSink::new(buffers.clone())));
     let written = buffers.0.lock().unwrap();
     let base = dissect_proof::Cnf::parse(&k2.formula).expect("the base parses");
     let cover: Vec<i32> = k2.cubes.iter().map(|c| c.literal).collect();
