@@ -5,13 +5,13 @@
 //! which replays them with the independent checker `dissect-proof`.
 
 use std::collections::BTreeMap;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
 use anyhow::{Context, Result};
-use dissect_exact::{Certificate, CubeProofWriters, ExactEvent, ProofSink};
+use dissect_exact::{Certificate, ExactEvent, ProofSink};
 
+use crate::kept_cubes;
 use crate::output::write_atomic;
 use crate::{InputError, Status};
 
@@ -35,74 +35,6 @@ pub struct Writer {
     written: Mutex<(BTreeMap<usize, Entry>, Option<String>)>,
     /// The first error met writing a cube's proof as it went.
     streamed: Arc<Mutex<Option<String>>>,
-}
-
-/// The files the cubes' proofs are written to as the solvers go:
-/// `kK.cube{j}.drat.part`, renamed to `kK.cube{j}.drat` when the
-/// certificate that lists the cube comes (a cube that was not refuted
-/// leaves its part behind until [`Writer::finish`] removes it).
-struct CubeFiles {
-    dir: PathBuf,
-    error: Arc<Mutex<Option<String>>>,
-}
-
-fn part(dir: &Path, k: usize, j: usize) -> PathBuf {
-    dir.join(format!("k{k}.cube{j}.drat.part"))
-}
-
-fn note(slot: &Mutex<Option<String>>, message: String) {
-    slot.lock()
-        .unwrap_or_else(|e| e.into_inner())
-        .get_or_insert(message);
-}
-
-impl CubeProofWriters for CubeFiles {
-    fn open(&self, pieces: usize, cube: usize) -> Option<Box<dyn Write + Send>> {
-        let path = part(&self.dir, pieces, cube);
-        match std::fs::File::create(&path) {
-            Ok(file) => Some(Box::new(Noted {
-                file,
-                path,
-                error: self.error.clone(),
-            })),
-            Err(e) => {
-                // The proof is then kept in memory and written at the end.
-                note(&self.error, format!("cannot write {}: {e}", path.display()));
-                None
-            }
-        }
-    }
-}
-
-/// A proof file whose first write error is kept for [`Writer::finish`].
-struct Noted {
-    file: std::fs::File,
-    path: PathBuf,
-    error: Arc<Mutex<Option<String>>>,
-}
-
-impl Noted {
-    fn noted<T>(&self, r: std::io::Result<T>) -> std::io::Result<T> {
-        if let Err(e) = &r {
-            note(
-                &self.error,
-                format!("cannot write {}: {e}", self.path.display()),
-            );
-        }
-        r
-    }
-}
-
-impl Write for Noted {
-    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-        let r = self.file.write(buf);
-        self.noted(r)
-    }
-
-    fn flush(&mut self) -> std::io::Result<()> {
-        let r = self.file.sync_all();
-        self.noted(r)
-    }
 }
 
 impl Writer {
@@ -130,7 +62,7 @@ impl Writer {
     /// that no proof is held in memory (for
     /// `BoundConfig::cube_proofs`).
     pub fn cube_proofs(&self) -> ProofSink {
-        ProofSink::new(Arc::new(CubeFiles {
+        ProofSink::new(Arc::new(crate::kept_cubes::CubeFiles {
             dir: self.dir.clone(),
             error: self.streamed.clone(),
         }))
@@ -190,6 +122,7 @@ impl Writer {
     /// `kK.cube{j}.cnf`, `kK.cube{j}.drat`.
     fn write_cubes(&self, c: &Certificate) -> Result<()> {
         let k = c.pieces;
+        let work = kept_cubes::work(&self.dir, k);
         let mut cover = format!(
             "c the cubes of k{k}.cnf: their literals, in order, are a clause of it;\n\
              c cube j (from 0) is k{k}.cube{{j}}.cnf (clauses added to k{k}.cnf, its unit first)\n\
@@ -207,7 +140,7 @@ impl Writer {
             let drat = self.dir.join(format!("k{k}.cube{j}.drat"));
             match &cube.proof {
                 Some(proof) => write_atomic(&drat, proof.as_bytes())?,
-                None => std::fs::rename(part(&self.dir, k, j), &drat)
+                None => std::fs::rename(kept_cubes::proof(&work, j), &drat)
                     .with_context(|| format!("cannot write {}", drat.display()))?,
             }
         }
@@ -229,7 +162,14 @@ impl Writer {
                 }
             }
         }
-        write_atomic(&self.dir.join(format!("k{k}.cubes")), cover.as_bytes())
+        write_atomic(&self.dir.join(format!("k{k}.cubes")), cover.as_bytes())?;
+        // The cubes kept for a later run are in the certificate now.
+        match std::fs::remove_dir_all(&work) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                Err(e).with_context(|| format!("cannot remove {}", work.display()))
+            }
+            _ => Ok(()),
+        }
     }
 
     fn readme(&self, written: &BTreeMap<usize, Entry>) -> String {
@@ -295,16 +235,11 @@ impl Writer {
     }
 
     /// The certificates written, or the first error met writing one. The
-    /// proofs of cubes that were never refuted (`*.drat.part`) are removed.
+    /// proofs of cubes that were not refuted (`*.drat.part`) are removed;
+    /// the refuted cubes of an unfinished K stay for a later run.
     pub fn finish(&self) -> Result<Vec<usize>> {
         let state = self.written.lock().unwrap_or_else(|e| e.into_inner());
-        if let Ok(entries) = std::fs::read_dir(&self.dir) {
-            for entry in entries.flatten() {
-                if entry.file_name().to_string_lossy().ends_with(".drat.part") {
-                    let _ = std::fs::remove_file(entry.path());
-                }
-            }
-        }
+        kept_cubes::tidy(&self.dir);
         let streamed = self.streamed.lock().unwrap_or_else(|e| e.into_inner());
         match state.1.as_ref().or(streamed.as_ref()) {
             Some(e) => Err(anyhow::anyhow!("{e}")),
@@ -312,10 +247,20 @@ impl Writer {
         }
     }
 
-    /// The line to print once the run is over.
+    /// The line to print once the run is over (and one per K whose
+    /// refuted cubes are kept for a later run).
     pub fn summary(&self) -> Result<String> {
         let ks = self.finish()?;
-        Ok(if ks.is_empty() {
+        let kept: String = kept_cubes::tidy(&self.dir)
+            .into_iter()
+            .map(|(k, cubes)| {
+                format!(
+                    "k{k}: {cubes} refuted cube(s) kept in {} (the same command resumes from them)\n",
+                    kept_cubes::work(&self.dir, k).display()
+                )
+            })
+            .collect();
+        let line = if ks.is_empty() {
             format!(
                 "certificates: none written to {} (no SAT refutation)",
                 self.dir.display()
@@ -328,7 +273,8 @@ impl Writer {
                 self.dir.display(),
                 self.dir.display()
             )
-        })
+        };
+        Ok(format!("{kept}{line}"))
     }
 }
 

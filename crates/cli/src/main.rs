@@ -7,6 +7,7 @@ mod disassemble;
 mod enumerate;
 mod info;
 mod input;
+mod kept_cubes;
 mod output;
 mod progress;
 mod prove;

@@ -126,6 +126,10 @@ impl ExactObserver for Lines {
                 index + 1,
                 if *refuted { "refuted" } else { "not refuted" }
             ),
+            ExactEvent::CubeKept { pieces, index, of } => eprintln!(
+                "[exact {t:6.1} s] {pieces} pieces: cube {}/{of} refuted by an earlier run (kept in the certificate folder)",
+                index + 1
+            ),
             ExactEvent::Found { pieces, .. } => {
                 eprintln!("[exact {t:6.1} s] SAT found a connected {pieces}-piece dissection")
             }

@@ -79,10 +79,33 @@ pub struct CubeProof {
 /// ([`ExactEvent::Certified`](crate::ExactEvent::Certified)) comes;
 /// a cube that is not refuted leaves an incomplete proof behind, and the
 /// same cube of a later pass for the same `pieces` opens its writer again.
+///
+/// The writers may also keep refuted cubes across runs: [`begin`](CubeProofWriters::begin)
+/// gives back those they hold for the same base formula and cover, and
+/// [`refuted`](CubeProofWriters::refuted) says when a cube's proof is whole.
+/// A kept cube is trusted by the search as refuted; the certificate that
+/// lists it is checked like any other (`dissect check-proof`).
 pub trait CubeProofWriters: Send + Sync {
     /// A writer for the proof of one cube; `None`: keep that proof in
     /// memory ([`CubeProof::proof`]).
     fn open(&self, pieces: usize, cube: usize) -> Option<Box<dyn std::io::Write + Send>>;
+
+    /// A cubed pass for `pieces` pieces begins, with the base formula
+    /// `base` (DIMACS) and the cubes' literals `cover`: per cube, the
+    /// refutation the writers already hold for exactly this base and cover
+    /// (its proof whole where they keep it), or `None` to solve it. The
+    /// default holds none.
+    fn begin(&self, pieces: usize, base: &str, cover: &[i32]) -> Vec<Option<CubeProof>> {
+        let _ = (pieces, base);
+        vec![None; cover.len()]
+    }
+
+    /// Cube `cube` of the pass for `pieces` pieces was refuted: its proof
+    /// (written through [`CubeProofWriters::open`], or in `proof.proof`)
+    /// is whole. The default does nothing.
+    fn refuted(&self, pieces: usize, cube: usize, proof: &CubeProof) {
+        let _ = (pieces, cube, proof);
+    }
 }
 
 /// A shared [`CubeProofWriters`], for [`crate::ExactOptions::cube_proofs`].
@@ -95,12 +118,8 @@ impl ProofSink {
         ProofSink(writers)
     }
 
-    pub(crate) fn open(
-        &self,
-        pieces: usize,
-        cube: usize,
-    ) -> Option<Box<dyn std::io::Write + Send>> {
-        self.0.open(pieces, cube)
+    pub(crate) fn writers(&self) -> &dyn CubeProofWriters {
+        &*self.0
     }
 }
 

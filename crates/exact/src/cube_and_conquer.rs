@@ -104,12 +104,11 @@ impl Cubes<'_> {
     ) -> (Pass, u64) {
         let next = AtomicUsize::new(0);
         let abort = AtomicBool::new(false);
-        let answers: Mutex<Vec<Option<Answer>>> =
-            Mutex::new((0..cube.len()).map(|_| None).collect());
         let spent_all = AtomicU64::new(0);
         if cube.is_empty() {
             return (Pass::Unknown, 0);
         }
+        let answers = Mutex::new(self.kept(k, cube, base.0.as_deref()));
         let threads = self.threads.clamp(1, cube.len());
         // Workers that have ended, counted even when one panics (the
         // monitor below must not wait for it).
@@ -149,8 +148,32 @@ impl Cubes<'_> {
         (self.gather(k, answers, base.0, start), spent)
     }
 
+    /// The answers known before solving: the cubes the proof writers
+    /// already hold refuted for this base and cover (each announced as
+    /// [`ExactEvent::CubeKept`]).
+    fn kept(&self, k: usize, cube: &[i32], base: Option<&str>) -> Vec<Option<Answer>> {
+        let held = match (self.certify, self.sink, base) {
+            (true, Some(sink), Some(base)) => sink.writers().begin(k, base, cube),
+            _ => Vec::new(),
+        };
+        let mut answers: Vec<Option<Answer>> = (0..cube.len()).map(|_| None).collect();
+        for (j, proof) in held.into_iter().enumerate().take(cube.len()) {
+            let Some(proof) = proof.filter(|p| p.literal == cube[j]) else {
+                continue;
+            };
+            self.cutting.observer.on_event(&ExactEvent::CubeKept {
+                pieces: k,
+                index: j,
+                of: cube.len(),
+            });
+            let cuts = proof.cuts;
+            answers[j] = Some(Answer::Unsat(Some(proof), cuts));
+        }
+        answers
+    }
+
     /// One worker: takes the next cube until none is left or `abort`
-    /// rises, and files each answer.
+    /// rises, and files each answer; skips the cubes already answered.
     fn work(
         &self,
         k: usize,
@@ -165,6 +188,9 @@ impl Cubes<'_> {
             if j >= cube.len() || abort.load(Ordering::SeqCst) {
                 break;
             }
+            if answers.lock().unwrap_or_else(|e| e.into_inner())[j].is_some() {
+                continue;
+            }
             let began = Instant::now();
             let (answer, spent) =
                 self.one(k, (j, cube[j]), (base_clauses, conflicts), abort, deadline);
@@ -176,6 +202,9 @@ impl Cubes<'_> {
                 seconds: began.elapsed().as_secs_f64(),
             });
             spent_all.fetch_add(spent, Ordering::SeqCst);
+            if let (Answer::Unsat(Some(proof), _), Some(sink)) = (&answer, self.sink) {
+                sink.writers().refuted(k, j, proof);
+            }
             let stop_all = !matches!(answer, Answer::Unsat(..));
             answers.lock().unwrap_or_else(|e| e.into_inner())[j] = Some(answer);
             if stop_all {
@@ -257,7 +286,7 @@ impl Cubes<'_> {
         let mut sat = Sat::new(abort, Some((self.upper, k)));
         sat.set_conflict_limit(conflicts);
         let streamed = self.certify
-            && match self.sink.and_then(|s| s.open(k, index)) {
+            && match self.sink.and_then(|s| s.writers().open(k, index)) {
                 Some(out) => {
                     sat.record_proof_to(out);
                     true

@@ -219,6 +219,18 @@ pub enum ExactEvent {
         /// Seconds it took.
         seconds: f64,
     },
+    /// Cube-and-conquer with [`ExactOptions::cube_proofs`]: the proof
+    /// writers already held cube `index` refuted for this very base
+    /// formula and cover (an earlier run's, [`CubeProofWriters::begin`](crate::CubeProofWriters::begin)),
+    /// so it is not solved again.
+    CubeKept {
+        /// K.
+        pieces: usize,
+        /// The cube (from 0).
+        index: usize,
+        /// The number of cubes.
+        of: usize,
+    },
     /// A verified dissection into `pieces` pieces.
     Found {
         /// Its piece count.
