@@ -35,6 +35,11 @@ pub struct BoundArgs {
     /// dissection exists). For timing other SAT solvers.
     #[arg(long, value_name = "FILE", requires = "max_pieces")]
     pub dimacs: Option<PathBuf>,
+    /// With --dimacs: add the full connectivity encoding (every piece
+    /// reached from its root), so that UNSAT proves that no dissection
+    /// into K connected pieces exists in one solve, and SAT gives one.
+    #[arg(long, requires = "dimacs")]
+    pub connected: bool,
     /// For every "no K-piece dissection" proved by SAT, write DIR/kK.cnf
     /// (the formula), DIR/kK.drat (its DRAT proof of unsatisfiability) and
     /// DIR/README.txt; check them with `dissect check-proof DIR`.
@@ -147,12 +152,22 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
     let figures = input::figures(&args.figures, args.lattice)?;
     input::check_equal_areas(&args.figures, &figures)?;
     if let (Some(path), Some(k)) = (&args.dimacs, args.max_pieces) {
-        let cnf = dissect_exact::dimacs(&figures, !args.no_mirror, k)
-            .map_err(|e| InputError(e.to_string()))?;
+        let cnf = if args.connected {
+            dissect_exact::dimacs_connected(
+                &figures,
+                !args.no_mirror,
+                k,
+                dissect_exact::DEFAULT_MAX_ENCODING_BYTES,
+            )
+        } else {
+            dissect_exact::dimacs(&figures, !args.no_mirror, k)
+        }
+        .map_err(|e| InputError(e.to_string()))?;
         crate::output::write_atomic(path, cnf.text.as_bytes())?;
         println!(
-            "wrote {}: at most {k} pieces, {} variables, {} clauses",
+            "wrote {}: at most {k} {}pieces, {} variables, {} clauses",
             path.display(),
+            if args.connected { "connected " } else { "" },
             cnf.vars,
             cnf.clauses
         );

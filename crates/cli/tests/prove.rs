@@ -109,6 +109,40 @@ fn bound_writes_the_dimacs_of_k_pieces() {
         &["bound", "--dimacs", "k.cnf", "a.txt", "b.txt"],
     );
     assert!(!out.status.success());
+    // --connected adds the connectivity encoding: the same clauses first,
+    // then more; it needs --dimacs.
+    let out = dissect(
+        dir.path(),
+        &[
+            "bound",
+            "--max-pieces",
+            "2",
+            "--dimacs",
+            "k2c.cnf",
+            "--connected",
+            "a.txt",
+            "b.txt",
+        ],
+    );
+    assert!(out.status.success());
+    assert!(stdout(&out).starts_with("wrote k2c.cnf: at most 2 connected pieces, "));
+    let connected = std::fs::read_to_string(dir.path().join("k2c.cnf")).unwrap();
+    let body = |t: &str| t.lines().skip(1).map(String::from).collect::<Vec<_>>();
+    let (relaxed, full) = (body(&cnf), body(&connected));
+    assert!(full.len() > relaxed.len());
+    assert_eq!(full[..relaxed.len()], relaxed[..]);
+    let out = dissect(
+        dir.path(),
+        &[
+            "bound",
+            "--max-pieces",
+            "2",
+            "--connected",
+            "a.txt",
+            "b.txt",
+        ],
+    );
+    assert!(!out.status.success());
 }
 
 #[test]

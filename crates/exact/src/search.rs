@@ -825,6 +825,30 @@ pub fn dimacs_within(
     k: usize,
     max_bytes: u64,
 ) -> Result<Dimacs, ExactError> {
+    dimacs_of(figures, mirror, k, max_bytes, false)
+}
+
+/// [`dimacs`] with the full connectivity encoding (every piece reached
+/// from its root, as the search adds it after a model with a split piece):
+/// the formula whose UNSAT settles "at most `k` connected pieces" in one
+/// solve, for other SAT solvers. Refused like [`dimacs_within`] past
+/// `max_bytes`, the connectivity encoding counted.
+pub fn dimacs_connected(
+    figures: &[Figure],
+    mirror: bool,
+    k: usize,
+    max_bytes: u64,
+) -> Result<Dimacs, ExactError> {
+    dimacs_of(figures, mirror, k, max_bytes, true)
+}
+
+fn dimacs_of(
+    figures: &[Figure],
+    mirror: bool,
+    k: usize,
+    max_bytes: u64,
+    connected: bool,
+) -> Result<Dimacs, ExactError> {
     dissect_core::solver::check_figures(figures)?;
     let asked = k;
     let k = k.clamp(1, figures[0].len());
@@ -855,13 +879,32 @@ pub fn dimacs_within(
         model_inputs(figures, mirror, &mut cheap).expect("not interrupted");
     inst.source_symmetries = true;
     let all = (MotionSet::All, MotionEncoding::Auto);
-    if let Some(e) = too_large(estimate(&inst, k, all, &clique, &incompat, &|| false)) {
+    let mut size = estimate(&inst, k, all, &clique, &incompat, &|| false);
+    if connected {
+        let shape0 = &inst.shapes[0];
+        let (v, c) = connectivity_size(shape0.len(), k, shape0.adj.iter().map(Vec::len).sum());
+        size.vars = size.vars.saturating_add(v.min(usize::MAX as u64) as usize);
+        size.clauses = size
+            .clauses
+            .saturating_add(c.min(usize::MAX as u64) as usize);
+    }
+    if let Some(e) = too_large(size) {
         return Err(e);
     }
     let stop = AtomicBool::new(false);
     let mut sat = Sat::new(&stop, None);
     sat.record();
-    encode(&inst, &mut sat, k, all, &clique, &incompat, &|| false).expect("not interrupted");
+    let enc =
+        encode(&inst, &mut sat, k, all, &clique, &incompat, &|| false).expect("not interrupted");
+    if connected {
+        add_connectivity(
+            &mut sat,
+            &inst.shapes[0],
+            &enc.cell[0],
+            &enc.anchors,
+            &|| false,
+        );
+    }
     let (text, clauses) = sat.dimacs().expect("recording");
     Ok(Dimacs {
         text,

@@ -661,3 +661,65 @@ fn cube_and_conquer_matches_brute_force() {
     let two = ["##\n##\n\n##\n##", "####\n####"];
     assert_eq!(bound_with(c, false, &two, (true, 2)), (2, 2));
 }
+
+/// Whether a DIMACS CNF is satisfiable (batsat, the search's own backend,
+/// on the text alone).
+fn satisfiable(dimacs: &str) -> bool {
+    use batsat::{lbool, Lit, SolverInterface};
+    let mut solver = batsat::BasicSolver::default();
+    for line in dimacs.lines().filter(|l| !l.starts_with(['p', 'c'])) {
+        let mut clause: Vec<Lit> = line
+            .split_whitespace()
+            .map(|t| t.parse::<i32>().unwrap())
+            .take_while(|&l| l != 0)
+            .map(|l| Lit::new(solver.var_of_int(l.unsigned_abs() - 1), l > 0))
+            .collect();
+        solver.add_clause_reuse(&mut clause);
+    }
+    solver.solve_limited(&[]) == lbool::TRUE
+}
+
+#[test]
+fn the_connected_dimacs_settles_what_the_relaxation_cannot() {
+    // The figures of split_models_are_repaired_both_ways: the relaxation
+    // for 2 pieces has models with split pieces; with the connectivity
+    // encoding it has none, and 3 connected pieces exist.
+    let figs = figures(
+        LatticeKind::Square,
+        &[
+            "######\n#.##.#\n######\n#.##.#",
+            "#####\n#####\n#####\n#####",
+        ],
+    );
+    let relaxed = dissect_exact::dimacs(&figs, true, 2).unwrap();
+    assert!(
+        satisfiable(&relaxed.text),
+        "the relaxation has a split model"
+    );
+    let max = dissect_exact::DEFAULT_MAX_ENCODING_BYTES;
+    let two = dissect_exact::dimacs_connected(&figs, true, 2, max).unwrap();
+    assert!(two.clauses > relaxed.clauses && two.vars > relaxed.vars);
+    assert!(two
+        .text
+        .starts_with(&format!("p cnf {} {}\n", two.vars, two.clauses)));
+    assert!(!satisfiable(&two.text), "no 2 connected pieces");
+    let three = dissect_exact::dimacs_connected(&figs, true, 3, max).unwrap();
+    assert!(satisfiable(&three.text), "3 connected pieces exist");
+    // Refused past the cap, the connectivity encoding counted: a cap the
+    // relaxation fits under and the connected formula does not.
+    let fits = |cap: u64| dissect_exact::dimacs_within(&figs, true, 2, cap).is_ok();
+    let (mut low, mut cap) = (1u64, 1u64 << 32);
+    while low < cap {
+        let mid = (low + cap) / 2;
+        if fits(mid) {
+            cap = mid;
+        } else {
+            low = mid + 1;
+        }
+    }
+    assert!(fits(cap) && !fits(cap - 1));
+    assert!(matches!(
+        dissect_exact::dimacs_connected(&figs, true, 2, cap),
+        Err(dissect_exact::ExactError::TooLarge { .. })
+    ));
+}
