@@ -324,15 +324,66 @@ fn certificates(dir: &Path) -> Result<Vec<(usize, PathBuf, PathBuf)>> {
     Ok(found)
 }
 
+fn not_text(path: &Path) -> anyhow::Error {
+    InputError(format!(
+        "{}: not text (binary DRAT is not read; write text DRAT)",
+        path.display()
+    ))
+    .into()
+}
+
+/// Checks the text DRAT proof in the file `proof` against `cnf` (read from
+/// `cnf_path`), a line at a time: the proof is never held whole, whatever
+/// its size. `Err`: the file cannot be read, is not text or is malformed
+/// (bad input, the whole file parsed as before); `Ok(Err)`: the proof
+/// fails.
+fn check_streamed(
+    cnf: &dissect_proof::Cnf,
+    cnf_path: &Path,
+    proof: &Path,
+) -> Result<std::result::Result<dissect_proof::Verified, dissect_proof::ProofError>> {
+    use std::io::BufRead;
+    let file =
+        std::fs::File::open(proof).with_context(|| format!("cannot read {}", proof.display()))?;
+    let mut reader = std::io::BufReader::with_capacity(1 << 20, file);
+    let mut checker = dissect_proof::Checker::new(cnf);
+    let mut stream = dissect_proof::ProofStream::new();
+    let (mut done, mut failed) = (false, None);
+    let mut buf = Vec::new();
+    loop {
+        buf.clear();
+        let n = reader
+            .read_until(b'\n', &mut buf)
+            .with_context(|| format!("cannot read {}", proof.display()))?;
+        if n == 0 {
+            break;
+        }
+        let line = std::str::from_utf8(&buf).map_err(|_| not_text(proof))?;
+        let line = line.strip_suffix('\n').unwrap_or(line);
+        let line = line.strip_suffix('\r').unwrap_or(line);
+        stream
+            .line(line, &mut |at, step| {
+                // Past a refutation or a failure the rest is only parsed.
+                if !done && failed.is_none() {
+                    match checker.step(at, &step) {
+                        Ok(refuted) => done = refuted,
+                        Err(e) => failed = Some(e),
+                    }
+                }
+                Ok(())
+            })
+            .map_err(|e| located(e, cnf_path, proof))?;
+    }
+    let last = stream.end().map_err(|e| located(e, cnf_path, proof))?;
+    Ok(match failed {
+        Some(e) => Err(e),
+        None => checker.finish(last),
+    })
+}
+
 fn read(path: &Path) -> Result<String> {
     let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
-    String::from_utf8(bytes).map_err(|_| {
-        InputError(format!(
-            "{}: not text (binary DRAT is not read; write text DRAT)",
-            path.display()
-        ))
-        .into()
-    })
+    String::from_utf8(bytes).map_err(|_| not_text(path))
 }
 
 /// Checks every certificate of the folder; the last line is `verified: ...`
@@ -349,9 +400,7 @@ pub fn check(args: CheckProofArgs) -> Result<Status> {
         }
         let cnf = dissect_proof::Cnf::parse(&read(cnf_path)?)
             .map_err(|e| located(e, cnf_path, proof_path))?;
-        let proof = dissect_proof::Proof::parse(&read(proof_path)?)
-            .map_err(|e| located(e, cnf_path, proof_path))?;
-        match dissect_proof::check(&cnf, &proof) {
+        match check_streamed(&cnf, cnf_path, proof_path)? {
             Ok(v) => println!(
                 "k{k}: verified: no dissection into at most {k} pieces ({} clauses, {} lemmas, {} RAT, {} deletions)",
                 cnf.clauses().len(),
@@ -407,8 +456,11 @@ fn check_cubed(k: usize, cnf_path: &Path, cover_path: &Path) -> Result<bool> {
     for (j, &literal) in cover.iter().enumerate() {
         let (c, p) = files(j);
         let cnf = dissect_proof::Cnf::parse(&read(&c)?).map_err(|e| located(e, &c, &p))?;
-        let proof = dissect_proof::Proof::parse(&read(&p)?).map_err(|e| located(e, &c, &p))?;
-        match dissect_proof::check_cube(&base, literal, &cnf, &proof) {
+        let checked = match dissect_proof::cube_formula(&base, literal, &cnf) {
+            Ok(whole) => check_streamed(&whole, &c, &p)?,
+            Err(e) => Err(e),
+        };
+        match checked {
             Ok(v) => {
                 lemmas += v.lemmas;
                 rat += v.rat_lemmas;

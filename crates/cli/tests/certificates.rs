@@ -100,6 +100,7 @@ fn a_formula_with_clauses_removed_fails_and_corruption_names_file_and_line() {
     assert!(out.status.success(), "{}", text(&out));
     let cert = dir.path().join("cert");
     let cnf = std::fs::read_to_string(cert.join("k2.cnf")).expect("k2 certified");
+    let proof = std::fs::read_to_string(cert.join("k2.drat")).expect("k2's proof");
     assert!(dissect(dir.path(), &["check-proof", "cert"])
         .status
         .success());
@@ -130,6 +131,16 @@ fn a_formula_with_clauses_removed_fails_and_corruption_names_file_and_line() {
         "{}",
         text(&out)
     );
+    // The proof is read a line at a time: a malformed line after the
+    // refutation is still bad input, and a binary (not text) proof too.
+    std::fs::write(cert.join("k2.drat"), format!("{proof}1 2\n")).unwrap();
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(text(&out).contains("not ended by 0"), "{}", text(&out));
+    std::fs::write(cert.join("k2.drat"), b"a\x82\x01\x00").unwrap();
+    let out = dissect(dir.path(), &["check-proof", "cert"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(text(&out).contains("k2.drat: not text"), "{}", text(&out));
     // A missing proof, and a folder without certificates.
     std::fs::remove_file(cert.join("k2.drat")).unwrap();
     let out = dissect(dir.path(), &["check-proof", "cert"]);

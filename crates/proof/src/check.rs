@@ -65,6 +65,10 @@ struct Db {
     index: Option<std::collections::HashMap<Vec<u32>, Vec<u32>>>,
     /// A deleted clause was a top-level reason: propagate again from scratch.
     dirty: bool,
+    /// Literals of deleted clauses still in `arena`.
+    dead: usize,
+    /// Compact once `dead` is past this and half the arena.
+    compact_at: usize,
 }
 
 impl Db {
@@ -81,6 +85,52 @@ impl Db {
             head: 0,
             index: None,
             dirty: false,
+            dead: 0,
+            compact_at: 1 << 22,
+        }
+    }
+
+    /// Whether the deleted clauses hold more of `arena` than the clauses
+    /// present (and a few million literals): time for [`Db::compacted`].
+    fn wasteful(&self) -> bool {
+        self.dead > self.compact_at && 2 * self.dead > self.arena.len()
+    }
+
+    /// The clauses present, in order, in a fresh database (deleted clauses
+    /// dropped: a long proof's memory stays that of the clauses present),
+    /// and whether they propagate to a conflict.
+    fn compacted(&self) -> (Db, bool) {
+        let mut db = Db::new(self.reason.len());
+        db.compact_at = self.compact_at;
+        let mut conflict = false;
+        for c in (0..self.start.len()).filter(|&c| self.alive[c]) {
+            let clause: Vec<i32> = self
+                .lits(c)
+                .iter()
+                .map(|&l| {
+                    let v = (l >> 1) as i32 + 1;
+                    if l & 1 == 1 {
+                        -v
+                    } else {
+                        v
+                    }
+                })
+                .collect();
+            conflict |= db.add(&clause);
+        }
+        (db, conflict)
+    }
+
+    /// Makes room for the variables of `clause` (a proof may name
+    /// variables the formula's header does not).
+    fn grow(&mut self, clause: &[i32]) {
+        let Some(vars) = clause.iter().map(|l| l.unsigned_abs() as usize).max() else {
+            return;
+        };
+        if vars > self.reason.len() {
+            self.watches.resize(2 * vars, Vec::new());
+            self.value.resize(2 * vars, 0);
+            self.reason.resize(vars, None);
         }
     }
 
@@ -231,6 +281,7 @@ impl Db {
             return false;
         };
         self.alive[id as usize] = false;
+        self.dead += self.size[id as usize] as usize;
         if let Some(&first) = self.lits(id as usize).first() {
             if self.reason[(first >> 1) as usize] == Some(id) {
                 self.dirty = true;
@@ -304,76 +355,200 @@ impl Db {
 
 /// Replays `proof` against `cnf`: `Ok` when it proves `cnf` unsatisfiable.
 pub fn check(cnf: &Cnf, proof: &Proof) -> Result<Verified, ProofError> {
-    let mut verified = Verified {
-        lemmas: 0,
-        rat_lemmas: 0,
-        deletions: 0,
-        missing_deletions: 0,
-        refuted_at_line: 0,
-    };
-    let vars = cnf.vars().max(max_var(proof));
-    let mut db = Db::new(vars);
-    for clause in cnf.clauses() {
-        if db.add(clause) {
-            return Ok(verified);
+    let mut checker = Checker::new(cnf);
+    for (line, step) in proof.steps() {
+        if checker.step(*line, step)? {
+            break;
         }
     }
-    for (step, (line, s)) in proof.steps().iter().enumerate() {
-        if db.dirty && db.rebuild() {
-            verified.refuted_at_line = *line;
-            return Ok(verified);
+    checker.finish(proof.last_line())
+}
+
+/// [`check`] a step at a time, for a proof read as it goes
+/// ([`ProofStream`](crate::ProofStream)): only the clauses present are
+/// held, never the proof.
+pub struct Checker {
+    db: Db,
+    verified: Verified,
+    /// Steps seen.
+    steps: usize,
+    /// The clauses present propagated to a conflict: proved.
+    refuted: bool,
+    /// Times the deleted clauses were dropped from memory.
+    compactions: usize,
+}
+
+impl Checker {
+    /// A checker of proofs of `cnf`, its clauses added.
+    pub fn new(cnf: &Cnf) -> Checker {
+        let mut checker = Checker {
+            db: Db::new(cnf.vars()),
+            verified: Verified {
+                lemmas: 0,
+                rat_lemmas: 0,
+                deletions: 0,
+                missing_deletions: 0,
+                refuted_at_line: 0,
+            },
+            steps: 0,
+            refuted: false,
+            compactions: 0,
+        };
+        for clause in cnf.clauses() {
+            checker.db.grow(clause);
+            if checker.db.add(clause) {
+                checker.refuted = true;
+                break;
+            }
         }
-        match s {
+        checker
+    }
+
+    /// Checks the next step, which starts on `line` of the proof: `true`
+    /// once the formula is refuted (the steps after that are not looked
+    /// at), an error when a lemma is neither RUP nor RAT.
+    pub fn step(&mut self, line: usize, step: &Step) -> Result<bool, ProofError> {
+        if self.refuted {
+            return Ok(true);
+        }
+        self.steps += 1;
+        if self.db.dirty && self.db.rebuild() {
+            return Ok(self.refute(line));
+        }
+        match step {
             Step::Delete(lits) => {
-                verified.deletions += 1;
-                if !db.delete(lits) {
-                    verified.missing_deletions += 1;
+                self.verified.deletions += 1;
+                if !self.db.delete(lits) {
+                    self.verified.missing_deletions += 1;
+                }
+                if self.db.wasteful() {
+                    let (db, conflict) = self.db.compacted();
+                    self.db = db;
+                    self.compactions += 1;
+                    if conflict {
+                        return Ok(self.refute(line));
+                    }
                 }
             }
             Step::Add(lemma) => {
-                verified.lemmas += 1;
+                self.db.grow(lemma);
+                self.verified.lemmas += 1;
                 // The pivot (the first literal) first, for RAT.
                 let codes: Vec<u32> = lemma.iter().map(|&l| code(l)).collect();
-                if !db.rup(&codes) {
-                    if !db.rat(&codes) {
+                if !self.db.rup(&codes) {
+                    if !self.db.rat(&codes) {
                         return Err(ProofError::NotImplied {
-                            line: *line,
-                            step: step + 1,
+                            line,
+                            step: self.steps,
                             lemma: dimacs(lemma),
                         });
                     }
-                    verified.rat_lemmas += 1;
+                    self.verified.rat_lemmas += 1;
                 }
-                if db.add(lemma) {
-                    verified.refuted_at_line = *line;
-                    return Ok(verified);
+                if self.db.add(lemma) {
+                    return Ok(self.refute(line));
                 }
             }
         }
+        Ok(false)
     }
-    if db.dirty && db.rebuild() {
-        verified.refuted_at_line = proof.last_line();
-        return Ok(verified);
-    }
-    Err(ProofError::Incomplete {
-        line: proof.last_line(),
-    })
-}
 
-fn max_var(proof: &Proof) -> usize {
-    proof
-        .steps()
-        .iter()
-        .flat_map(|(_, s)| match s {
-            Step::Add(l) | Step::Delete(l) => l.iter(),
-        })
-        .map(|l| l.unsigned_abs() as usize)
-        .max()
-        .unwrap_or(0)
+    fn refute(&mut self, line: usize) -> bool {
+        self.refuted = true;
+        self.verified.refuted_at_line = line;
+        true
+    }
+
+    /// The end of the proof, whose last line is `last_line`: `Ok` when the
+    /// formula is refuted.
+    pub fn finish(mut self, last_line: usize) -> Result<Verified, ProofError> {
+        if !self.refuted && self.db.dirty && self.db.rebuild() {
+            self.refute(last_line);
+        }
+        if self.refuted {
+            Ok(self.verified)
+        } else {
+            Err(ProofError::Incomplete { line: last_line })
+        }
+    }
 }
 
 pub(crate) fn dimacs(lits: &[i32]) -> String {
     let mut s: String = lits.iter().map(|l| format!("{l} ")).collect();
     s.push('0');
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Checks `proof` against `cnf` compacting after every deletion that
+    /// leaves more dead literals than live ones.
+    fn check_compacting(cnf: &Cnf, proof: &Proof) -> (Result<Verified, ProofError>, usize) {
+        let mut checker = Checker::new(cnf);
+        checker.db.compact_at = 0;
+        for (line, step) in proof.steps() {
+            match checker.step(*line, step) {
+                Ok(true) => break,
+                Ok(false) => {}
+                Err(e) => return (Err(e), checker.compactions),
+            }
+        }
+        let n = checker.compactions;
+        (checker.finish(proof.last_line()), n)
+    }
+
+    #[test]
+    fn compacting_the_clauses_present_changes_no_answer() {
+        let mut x: u64 = 0x2545_f491_4f6c_dd1d;
+        let mut below = |n: u64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x % n
+        };
+        let mut compactions = 0;
+        for _ in 0..1000 {
+            let vars = 2 + below(4) as i32;
+            let clause = |below: &mut dyn FnMut(u64) -> u64| -> Vec<i32> {
+                (0..1 + below(3))
+                    .map(|_| {
+                        let v = 1 + below(vars as u64) as i32;
+                        if below(2) == 0 {
+                            v
+                        } else {
+                            -v
+                        }
+                    })
+                    .collect()
+            };
+            let clauses: Vec<Vec<i32>> = (0..2 + below(12)).map(|_| clause(&mut below)).collect();
+            let cnf = Cnf::new(vars as usize, clauses.clone());
+            // Lemmas and deletions of the formula's clauses and of lemmas.
+            let mut text = String::new();
+            let mut added: Vec<Vec<i32>> = Vec::new();
+            for _ in 0..below(12) {
+                let (del, c) = match below(3) {
+                    0 => (true, clauses[below(clauses.len() as u64) as usize].clone()),
+                    1 if !added.is_empty() => {
+                        (true, added[below(added.len() as u64) as usize].clone())
+                    }
+                    _ => (false, clause(&mut below)),
+                };
+                if !del {
+                    added.push(c.clone());
+                }
+                text.push_str(if del { "d " } else { "" });
+                text.push_str(&dimacs(&c));
+                text.push('\n');
+            }
+            text.push_str("0\n");
+            let proof = Proof::parse(&text).unwrap();
+            let (answer, n) = check_compacting(&cnf, &proof);
+            assert_eq!(answer, check(&cnf, &proof), "{text}");
+            compactions += n;
+        }
+        assert!(compactions > 100, "{compactions} compactions");
+    }
 }

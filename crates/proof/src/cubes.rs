@@ -111,11 +111,17 @@ pub fn check_cube(
     extra: &Cnf,
     proof: &Proof,
 ) -> Result<Verified, ProofError> {
+    check(&cube_formula(base, literal, extra)?, proof)
+}
+
+/// The formula a cube's proof refutes: `base` with the cube's clauses
+/// `extra`, which must hold the unit of `literal` (for checking a proof
+/// read a line at a time, with [`Checker`](crate::Checker)).
+pub fn cube_formula(base: &Cnf, literal: i32, extra: &Cnf) -> Result<Cnf, ProofError> {
     if !extra.clauses().iter().any(|c| c.as_slice() == [literal]) {
         return Err(ProofError::NoUnit { literal });
     }
     let mut clauses = base.clauses().to_vec();
     clauses.extend(extra.clauses().iter().cloned());
-    let whole = Cnf::new(base.vars().max(extra.vars()), clauses);
-    check(&whole, proof)
+    Ok(Cnf::new(base.vars().max(extra.vars()), clauses))
 }

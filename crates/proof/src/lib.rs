@@ -10,6 +10,11 @@
 //! present yields a conflict (the empty clause is then RUP), which proves
 //! the formula unsatisfiable.
 //!
+//! A proof too large to hold is checked a line at a time: [`ProofStream`]
+//! splits the lines the caller reads into steps and [`Checker`] replays
+//! them, holding only the clauses present (the deleted ones are dropped
+//! from memory once they outweigh the rest).
+//!
 //! Cube-and-conquer certificates ([`check_cubes`]): a base formula, one of
 //! its clauses whose literals are the cubes, and per cube the clauses it
 //! adds (its unit first) with a proof refuting the base plus them.
@@ -21,9 +26,9 @@ mod check;
 mod cubes;
 mod parse;
 
-pub use check::{check, Verified};
-pub use cubes::{check_cover, check_cube, check_cubes, parse_cover};
-pub use parse::{Cnf, Proof, Step};
+pub use check::{check, Checker, Verified};
+pub use cubes::{check_cover, check_cube, check_cubes, cube_formula, parse_cover};
+pub use parse::{Cnf, Proof, ProofStream, Step};
 
 /// Which of the two texts an error is in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

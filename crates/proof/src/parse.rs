@@ -40,6 +40,83 @@ pub(crate) fn literal(token: &str, line: usize, source: Source) -> Result<i32, P
     })
 }
 
+/// Splits clause text into clauses a line at a time: the whole-text
+/// parsers and [`ProofStream`] share it.
+struct Splitter {
+    source: Source,
+    deletions: bool,
+    /// The clause being read: its first line, whether it is a deletion,
+    /// its literals so far.
+    open: Option<(usize, bool, Vec<i32>)>,
+    /// Lines fed so far.
+    line: usize,
+}
+
+impl Splitter {
+    fn new(source: Source, deletions: bool) -> Splitter {
+        Splitter {
+            source,
+            deletions,
+            open: None,
+            line: 0,
+        }
+    }
+
+    /// Feeds the next line (`c` comments and the lines `skip` accepts are
+    /// skipped); every clause it ends goes to `out` as `(line, is_deletion,
+    /// literals)`.
+    fn feed(
+        &mut self,
+        raw: &str,
+        skip: &mut dyn FnMut(usize, &str) -> Result<bool, ProofError>,
+        out: &mut dyn FnMut(usize, bool, Vec<i32>) -> Result<(), ProofError>,
+    ) -> Result<(), ProofError> {
+        self.line += 1;
+        let line = self.line;
+        let trimmed = raw.trim();
+        if trimmed.is_empty() || trimmed.starts_with('c') || skip(line, trimmed)? {
+            return Ok(());
+        }
+        for token in trimmed.split_whitespace() {
+            if token == "d" && self.deletions {
+                match &self.open {
+                    Some((_, _, lits)) if !lits.is_empty() => {
+                        return Err(ProofError::Parse {
+                            text: self.source,
+                            line,
+                            message: "`d` inside a clause".into(),
+                        })
+                    }
+                    _ => self.open = Some((line, true, Vec::new())),
+                }
+                continue;
+            }
+            let lit = literal(token, line, self.source)?;
+            let entry = self.open.get_or_insert_with(|| (line, false, Vec::new()));
+            if lit == 0 {
+                let (at, del, lits) = self.open.take().expect("open");
+                out(at, del, lits)?;
+            } else {
+                entry.2.push(lit);
+            }
+        }
+        Ok(())
+    }
+
+    /// The end of the text: an error when a clause is left open; else the
+    /// number of the last line (at least 1).
+    fn end(self) -> Result<usize, ProofError> {
+        if let Some((line, _, _)) = self.open {
+            return Err(ProofError::Parse {
+                text: self.source,
+                line,
+                message: "clause not ended by 0".into(),
+            });
+        }
+        Ok(self.line.max(1))
+    }
+}
+
 /// Splits `text` into clauses: `(line, is_deletion, literals)` for every
 /// clause ended by `0`, skipping `c` comment lines and the lines `skip`
 /// accepts.
@@ -49,42 +126,65 @@ fn clauses(
     deletions: bool,
     skip: &mut dyn FnMut(usize, &str) -> Result<bool, ProofError>,
 ) -> Result<Vec<(usize, bool, Vec<i32>)>, ProofError> {
-    let err = |line: usize, message: String| ProofError::Parse {
-        text: source,
-        line,
-        message,
-    };
     let mut out = Vec::new();
-    let mut open: Option<(usize, bool, Vec<i32>)> = None;
-    for (i, raw) in text.lines().enumerate() {
-        let line = i + 1;
-        let trimmed = raw.trim();
-        if trimmed.is_empty() || trimmed.starts_with('c') || skip(line, trimmed)? {
-            continue;
-        }
-        for token in trimmed.split_whitespace() {
-            if token == "d" && deletions {
-                match &open {
-                    Some((_, _, lits)) if !lits.is_empty() => {
-                        return Err(err(line, "`d` inside a clause".into()))
-                    }
-                    _ => open = Some((line, true, Vec::new())),
-                }
-                continue;
-            }
-            let lit = literal(token, line, source)?;
-            let entry = open.get_or_insert_with(|| (line, false, Vec::new()));
-            if lit == 0 {
-                out.push(open.take().expect("open"));
-            } else {
-                entry.2.push(lit);
-            }
-        }
+    let mut splitter = Splitter::new(source, deletions);
+    for raw in text.lines() {
+        splitter.feed(raw, skip, &mut |line, del, lits| {
+            out.push((line, del, lits));
+            Ok(())
+        })?;
     }
-    if let Some((line, _, _)) = open {
-        return Err(err(line, "clause not ended by 0".into()));
-    }
+    splitter.end()?;
     Ok(out)
+}
+
+/// A text DRAT proof read a line at a time, for proofs too large to hold
+/// (the caller reads the lines; each finished step goes to a callback,
+/// e.g. [`Checker::step`](crate::Checker::step)). It accepts what
+/// [`Proof::parse`] accepts, with the same errors.
+pub struct ProofStream {
+    splitter: Splitter,
+}
+
+impl Default for ProofStream {
+    fn default() -> ProofStream {
+        ProofStream::new()
+    }
+}
+
+impl ProofStream {
+    /// A stream at the proof's first line.
+    pub fn new() -> ProofStream {
+        ProofStream {
+            splitter: Splitter::new(Source::Proof, true),
+        }
+    }
+
+    /// Reads the next line (without its line break); every step it ends
+    /// goes to `each` with the line it starts on.
+    pub fn line(
+        &mut self,
+        text: &str,
+        each: &mut dyn FnMut(usize, Step) -> Result<(), ProofError>,
+    ) -> Result<(), ProofError> {
+        self.splitter
+            .feed(text, &mut |_, _| Ok(false), &mut |line, del, lits| {
+                each(
+                    line,
+                    if del {
+                        Step::Delete(lits)
+                    } else {
+                        Step::Add(lits)
+                    },
+                )
+            })
+    }
+
+    /// The end of the proof: the number of its last line, or an error when
+    /// a step is left open.
+    pub fn end(self) -> Result<usize, ProofError> {
+        self.splitter.end()
+    }
 }
 
 impl Cnf {

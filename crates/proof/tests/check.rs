@@ -3,14 +3,43 @@
 //! of any unsatisfiable formula is accepted, and a proof or formula with a
 //! clause removed, or a corrupted text, is rejected with its line.
 
-use dissect_proof::{check, Cnf, Proof, ProofError, Source};
+use dissect_proof::{Checker, Cnf, Proof, ProofError, ProofStream, Source, Verified};
 
 fn cnf(text: &str) -> Cnf {
     Cnf::parse(text).expect("a formula")
 }
 
-fn proof(text: &str) -> Proof {
-    Proof::parse(text).expect("a proof")
+/// A proof, parsed whole, and its text.
+struct Text(Proof, String);
+
+fn proof(text: &str) -> Text {
+    Text(Proof::parse(text).expect("a proof"), text.to_string())
+}
+
+/// `dissect_proof::check` on the whole proof, asserting that the proof
+/// read a line at a time (`ProofStream` into a `Checker`) gives the same
+/// answer.
+fn check(f: &Cnf, p: &Text) -> Result<Verified, ProofError> {
+    let whole = dissect_proof::check(f, &p.0);
+    assert_eq!(streamed(f, &p.1), whole, "streamed: {:?}", p.1);
+    whole
+}
+
+/// The proof `text` checked against `f` a line at a time.
+fn streamed(f: &Cnf, text: &str) -> Result<Verified, ProofError> {
+    let mut checker = Checker::new(f);
+    let mut stream = ProofStream::new();
+    let mut done = false;
+    for line in text.lines() {
+        stream.line(line, &mut |at, step| {
+            if !done {
+                done = checker.step(at, &step)?;
+            }
+            Ok(())
+        })?;
+    }
+    let last = stream.end()?;
+    checker.finish(last)
 }
 
 /// The four clauses over two variables: unsatisfiable.
@@ -114,8 +143,11 @@ fn corrupted_texts_are_errors_that_name_the_line() {
     for (formula, text, source, line) in cases {
         let e = Cnf::parse(formula)
             .and_then(|f| Proof::parse(text).map(|p| (f, p)))
-            .and_then(|(f, p)| check(&f, &p).map(|_| ()))
+            .and_then(|(f, p)| dissect_proof::check(&f, &p).map(|_| ()))
             .unwrap_err();
+        if let Ok(f) = Cnf::parse(formula) {
+            assert_eq!(streamed(&f, text).map(|_| ()), Err(e.clone()), "streamed");
+        }
         assert!(matches!(e, ProofError::Parse { .. }), "{e}");
         assert_eq!(e.location(), (source, line), "{formula:?} / {text:?}: {e}");
         assert!(e.to_string().contains(&format!("line {line}")), "{e}");
