@@ -84,18 +84,14 @@ fn bound_refutes_two_pieces_by_sat() {
 fn bound_writes_the_dimacs_of_k_pieces() {
     let dir = tempfile::tempdir().unwrap();
     files(dir.path(), &[("a.txt", HOLE), ("b.txt", SQUARE_4)]);
-    let out = dissect(
-        dir.path(),
-        &[
-            "bound",
-            "--max-pieces",
-            "2",
-            "--dimacs",
-            "k2.cnf",
-            "a.txt",
-            "b.txt",
-        ],
-    );
+    // `bound --max-pieces 2 --dimacs FILE` with `more` flags.
+    let write = |file: &str, more: &[&str]| {
+        let mut args = vec!["bound", "--max-pieces", "2", "--dimacs", file];
+        args.extend(more);
+        args.extend(["a.txt", "b.txt"]);
+        dissect(dir.path(), &args)
+    };
+    let out = write("k2.cnf", &[]);
     assert!(out.status.success());
     assert!(stdout(&out).starts_with("wrote k2.cnf: at most 2 pieces, "));
     let cnf = std::fs::read_to_string(dir.path().join("k2.cnf")).unwrap();
@@ -111,19 +107,7 @@ fn bound_writes_the_dimacs_of_k_pieces() {
     assert!(!out.status.success());
     // --connected adds the connectivity encoding: the same clauses first,
     // then more; it needs --dimacs.
-    let out = dissect(
-        dir.path(),
-        &[
-            "bound",
-            "--max-pieces",
-            "2",
-            "--dimacs",
-            "k2c.cnf",
-            "--connected",
-            "a.txt",
-            "b.txt",
-        ],
-    );
+    let out = write("k2c.cnf", &["--connected"]);
     assert!(out.status.success());
     assert!(stdout(&out).starts_with("wrote k2c.cnf: at most 2 connected pieces, "));
     let connected = std::fs::read_to_string(dir.path().join("k2c.cnf")).unwrap();
