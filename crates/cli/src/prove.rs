@@ -40,6 +40,15 @@ pub struct BoundArgs {
     /// into K connected pieces exists in one solve, and SAT gives one.
     #[arg(long, requires = "dimacs")]
     pub connected: bool,
+    /// Solve nothing: read FILE, another SAT solver's model of the
+    /// formula of --dimacs (with or without --connected) for the K of
+    /// --max-pieces (its `v` lines, or bare literals), and turn it into
+    /// the dissection it stands for, verified; written with --output.
+    #[arg(long, value_name = "FILE", requires = "max_pieces", conflicts_with_all = ["dimacs", "certificate"])]
+    pub model: Option<PathBuf>,
+    /// With --model: write the dissection to FILE (solution JSON).
+    #[arg(long, short, value_name = "FILE", requires = "model")]
+    pub output: Option<PathBuf>,
     /// For every "no K-piece dissection" proved by SAT, write DIR/kK.cnf
     /// (the formula), DIR/kK.drat (its DRAT proof of unsatisfiability) and
     /// DIR/README.txt; check them with `dissect check-proof DIR`.
@@ -173,6 +182,9 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         );
         return Ok(Status::Ok);
     }
+    if let (Some(path), Some(k)) = (&args.model, args.max_pieces) {
+        return from_model(&args, &figures, path, k);
+    }
     let names = names(&args.figures);
     let certificates = match &args.certificate {
         Some(dir) => Some(crate::certificate::Writer::new(
@@ -240,4 +252,48 @@ impl EngineObserver for Lines {
             ExactObserver::on_event(self, e);
         }
     }
+}
+
+/// `bound --model FILE`: the dissection a SAT solver's model stands for.
+fn from_model(
+    args: &BoundArgs,
+    figures: &[dissect_core::Figure],
+    path: &std::path::Path,
+    k: usize,
+) -> Result<Status> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError(format!("{}: cannot read: {e}", path.display())))?;
+    let mut model = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let line = line.trim();
+        // A solver's answer line and comments; `v` lines or bare literals.
+        if line.is_empty() || line.starts_with('c') || line.starts_with('s') {
+            continue;
+        }
+        for token in line.strip_prefix('v').unwrap_or(line).split_whitespace() {
+            let lit: i32 = token.parse().map_err(|_| {
+                InputError(format!(
+                    "{} line {}: `{token}` is not a literal",
+                    path.display(),
+                    i + 1
+                ))
+            })?;
+            model.push(lit);
+        }
+    }
+    let mirror = !args.no_mirror && args.lattice.lattice().supports_mirror();
+    let pieces = dissect_exact::decode_model(figures, mirror, k, &model)
+        .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
+    let count = pieces[0].len();
+    println!(
+        "the model of {} is a verified dissection into {count} pieces",
+        path.display()
+    );
+    if let Some(out) = &args.output {
+        let d = dissect_core::Dissection::new(args.lattice, mirror, names(&args.figures), pieces)
+            .map_err(|e| InputError(e.to_string()))?;
+        crate::output::write_atomic(out, d.to_file(Default::default()).to_json())?;
+        println!("wrote {}", out.display());
+    }
+    Ok(Status::Ok)
 }

@@ -237,3 +237,92 @@ fn bound_names_the_file_on_bad_input() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("different areas"));
 }
+
+/// `bound --model FILE`: another solver's model of the `--dimacs
+/// --connected` formula becomes the dissection it stands for, verified and
+/// written; a malformed or wrong model is bad input naming the file. The
+/// round trip needs a solver on the PATH (CI installs cadical).
+#[test]
+fn bound_turns_another_solvers_model_into_a_verified_dissection() {
+    let dir = tempfile::tempdir().unwrap();
+    files(dir.path(), &[("a.txt", SQUARES_3_4), ("b.txt", SQUARE_5)]);
+    let decode = |model: &str| {
+        dissect(
+            dir.path(),
+            &[
+                "bound",
+                "--max-pieces",
+                "4",
+                "--model",
+                model,
+                "-o",
+                "s.json",
+                "a.txt",
+                "b.txt",
+            ],
+        )
+    };
+    std::fs::write(dir.path().join("bad.txt"), "s SATISFIABLE\nv 1 -2 x 0\n").unwrap();
+    let out = decode("bad.txt");
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("bad.txt line 2: `x` is not a literal"),
+        "{err}"
+    );
+    std::fs::write(dir.path().join("none.txt"), "v 0\n").unwrap();
+    let out = decode("none.txt");
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("none.txt: the model is no dissection"),
+        "{err}"
+    );
+    assert!(!dir.path().join("s.json").exists());
+
+    let Ok(solver) = Command::new("cadical").arg("--version").output() else {
+        eprintln!("no cadical on the PATH: the round trip is not run");
+        return;
+    };
+    assert!(solver.status.success());
+    let out = dissect(
+        dir.path(),
+        &[
+            "bound",
+            "--max-pieces",
+            "4",
+            "--dimacs",
+            "k4.cnf",
+            "--connected",
+            "a.txt",
+            "b.txt",
+        ],
+    );
+    assert!(out.status.success());
+    let answer = Command::new("cadical")
+        .current_dir(dir.path())
+        .args(["-q", "k4.cnf"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        answer.status.code(),
+        Some(10),
+        "satisfiable: 4 pieces exist"
+    );
+    std::fs::write(dir.path().join("model.txt"), &answer.stdout).unwrap();
+    let out = decode("model.txt");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout(&out).contains("is a verified dissection into 4 pieces"),
+        "{}",
+        stdout(&out)
+    );
+    assert_eq!(
+        dissect_testkit::repo::assert_checked(dir.path(), "square", "s.json", &["a.txt", "b.txt"]),
+        4
+    );
+}

@@ -55,8 +55,8 @@ pub use motion::MotionSet;
 pub use placement_encoding::{EncodingSize, MotionEncoding};
 pub use repair::{repair, repair_report, RepairOptions, RepairReport};
 pub use search::{
-    dimacs, dimacs_connected, dimacs_within, search, Dimacs, ExactEvent, ExactObserver,
-    ExactOptions, ExactOutcome, Limit, Mode, DEFAULT_MAX_ENCODING_BYTES,
+    decode_model, dimacs, dimacs_connected, dimacs_within, search, Dimacs, ExactEvent,
+    ExactObserver, ExactOptions, ExactOutcome, Limit, Mode, DEFAULT_MAX_ENCODING_BYTES,
 };
 
 /// Occurs when figures cannot be given to the exact search.
@@ -71,6 +71,10 @@ pub enum ExactError {
     /// verifier: a bug in the encoding, never the user's fault.
     #[error("internal error: a SAT model decoded into an invalid dissection: {0}")]
     InvalidModel(String),
+    /// Occurs when a model given to [`decode_model`] is no dissection of
+    /// the figures (a model of another formula, or of another K).
+    #[error("the model is no dissection of these figures: {0}")]
+    Model(String),
     /// Occurs when a candidate given to [`repair()`] does not partition the
     /// figures into the same number of labels.
     #[error("invalid candidate: {0}")]

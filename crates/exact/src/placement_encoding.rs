@@ -667,13 +667,18 @@ impl Encoding {
     /// The pieces of the last model: `pieces[f][i]` are cell indices of
     /// shape `f`; pieces empty in the model are dropped.
     pub fn decode(&self, sat: &Sat<'_>) -> Vec<Vec<Vec<usize>>> {
+        self.decode_with(&|v| sat.value(v))
+    }
+
+    /// [`Encoding::decode`] of the model whose variables are `value`.
+    pub fn decode_with(&self, value: &dyn Fn(i32) -> bool) -> Vec<Vec<Vec<usize>>> {
         let mut pieces: Vec<Vec<Vec<usize>>> = self
             .cell
             .iter()
             .map(|per_piece| {
                 per_piece
                     .iter()
-                    .map(|vars| (0..vars.len()).filter(|&c| sat.value(vars[c])).collect())
+                    .map(|vars| (0..vars.len()).filter(|&c| value(vars[c])).collect())
                     .collect()
             })
             .collect();

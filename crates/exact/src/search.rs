@@ -849,6 +849,48 @@ fn dimacs_of(
     max_bytes: u64,
     connected: bool,
 ) -> Result<Dimacs, ExactError> {
+    let stop = AtomicBool::new(false);
+    let (_, sat, _) = formula(figures, mirror, k, (max_bytes, connected, true), &stop)?;
+    let (text, clauses) = sat.dimacs().expect("recording");
+    Ok(Dimacs {
+        text,
+        vars: sat.vars(),
+        clauses,
+    })
+}
+
+/// The dissection that a model of the formula of [`dimacs_connected`]
+/// (or [`dimacs`]) for `k` pieces stands for, from any SAT solver: `model`
+/// holds the literals it sets true (the numbers of its `v` lines; a
+/// variable it does not list is false). The formula is built again (the
+/// encoding is deterministic), the pieces are read from its cell
+/// variables and verified. `pieces[f][i]` in input order.
+pub fn decode_model(
+    figures: &[Figure],
+    mirror: bool,
+    k: usize,
+    model: &[i32],
+) -> Result<Vec<Vec<Vec<Cell>>>, ExactError> {
+    let stop = AtomicBool::new(false);
+    let cap = DEFAULT_MAX_ENCODING_BYTES;
+    let (inst, _, enc) = formula(figures, mirror, k, (cap, false, false), &stop)?;
+    let truth: std::collections::HashSet<i32> = model.iter().copied().filter(|&l| l > 0).collect();
+    let pieces = to_cells(&inst, &enc.decode_with(&|v| truth.contains(&v)));
+    dissect_core::verify::verify_pieces(inst.lattice, inst.mirror, figures, &pieces)
+        .map_err(|v| ExactError::Model(v[0].to_string()))?;
+    Ok(pieces)
+}
+
+/// The encoding of "at most `k` pieces" with all motions (and the
+/// connectivity encoding when `connected`), recorded when `record`, as
+/// [`dimacs`] and [`decode_model`] share it.
+fn formula<'s>(
+    figures: &[Figure],
+    mirror: bool,
+    k: usize,
+    (max_bytes, connected, record): (u64, bool, bool),
+    stop: &'s AtomicBool,
+) -> Result<(Instance, Sat<'s>, crate::placement_encoding::Encoding), ExactError> {
     dissect_core::solver::check_figures(figures)?;
     let asked = k;
     let k = k.clamp(1, figures[0].len());
@@ -891,9 +933,10 @@ fn dimacs_of(
     if let Some(e) = too_large(size) {
         return Err(e);
     }
-    let stop = AtomicBool::new(false);
-    let mut sat = Sat::new(&stop, None);
-    sat.record();
+    let mut sat = Sat::new(stop, None);
+    if record {
+        sat.record();
+    }
     let enc =
         encode(&inst, &mut sat, k, all, &clique, &incompat, &|| false).expect("not interrupted");
     if connected {
@@ -905,12 +948,7 @@ fn dimacs_of(
             &|| false,
         );
     }
-    let (text, clauses) = sat.dimacs().expect("recording");
-    Ok(Dimacs {
-        text,
-        vars: sat.vars(),
-        clauses,
-    })
+    Ok((inst, sat, enc))
 }
 
 /// Cell indices per shape to sorted cells per figure, in input order.

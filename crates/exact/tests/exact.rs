@@ -662,11 +662,16 @@ fn cube_and_conquer_matches_brute_force() {
     assert_eq!(bound_with(c, false, &two, (true, 2)), (2, 2));
 }
 
-/// Whether a DIMACS CNF is satisfiable (batsat, the search's own backend,
-/// on the text alone).
-fn satisfiable(dimacs: &str) -> bool {
+/// A model of a DIMACS CNF (its true literals, every variable listed with
+/// its sign), or `None` when it is unsatisfiable (batsat, the search's own
+/// backend, on the text alone, as another solver would see it).
+fn model(dimacs: &str) -> Option<Vec<i32>> {
     use batsat::{lbool, Lit, SolverInterface};
     let mut solver = batsat::BasicSolver::default();
+    let vars: usize = dimacs.split_whitespace().nth(2).unwrap().parse().unwrap();
+    for v in 0..vars {
+        solver.var_of_int(v as u32);
+    }
     for line in dimacs.lines().filter(|l| !l.starts_with(['p', 'c'])) {
         let mut clause: Vec<Lit> = line
             .split_whitespace()
@@ -676,7 +681,22 @@ fn satisfiable(dimacs: &str) -> bool {
             .collect();
         solver.add_clause_reuse(&mut clause);
     }
-    solver.solve_limited(&[]) == lbool::TRUE
+    (solver.solve_limited(&[]) == lbool::TRUE).then(|| {
+        (1..=vars as i32)
+            .map(|v| {
+                let var = solver.var_of_int(v as u32 - 1);
+                if solver.value_var(var) == lbool::TRUE {
+                    v
+                } else {
+                    -v
+                }
+            })
+            .collect()
+    })
+}
+
+fn satisfiable(dimacs: &str) -> bool {
+    model(dimacs).is_some()
 }
 
 #[test]
@@ -721,5 +741,44 @@ fn the_connected_dimacs_settles_what_the_relaxation_cannot() {
     assert!(matches!(
         dissect_exact::dimacs_connected(&figs, true, 2, cap),
         Err(dissect_exact::ExactError::TooLarge { .. })
+    ));
+}
+
+#[test]
+fn a_model_from_another_solver_decodes_into_a_verified_dissection() {
+    // The figures of split_models_are_repaired_both_ways: 3 connected
+    // pieces, and the relaxation for 2 has split models.
+    let figs = figures(
+        LatticeKind::Square,
+        &[
+            "######\n#.##.#\n######\n#.##.#",
+            "#####\n#####\n#####\n#####",
+        ],
+    );
+    let max = dissect_exact::DEFAULT_MAX_ENCODING_BYTES;
+    let three = dissect_exact::dimacs_connected(&figs, true, 3, max).unwrap();
+    let m = model(&three.text).expect("3 connected pieces exist");
+    let pieces = dissect_exact::decode_model(&figs, true, 3, &m).expect("a dissection");
+    assert_eq!(
+        dissect_core::verify::verify_pieces(LatticeKind::Square, true, &figs, &pieces),
+        Ok(pieces[0].len())
+    );
+    assert!(pieces[0].len() <= 3);
+    // Only the true literals count: the same model without its negatives.
+    let positives: Vec<i32> = m.iter().copied().filter(|&l| l > 0).collect();
+    assert_eq!(
+        dissect_exact::decode_model(&figs, true, 3, &positives),
+        Ok(pieces)
+    );
+    // A split model of the relaxation is no dissection, nor is nothing.
+    let relaxed = dissect_exact::dimacs(&figs, true, 2).unwrap();
+    let split = model(&relaxed.text).expect("a split model");
+    assert!(matches!(
+        dissect_exact::decode_model(&figs, true, 2, &split),
+        Err(dissect_exact::ExactError::Model(_))
+    ));
+    assert!(matches!(
+        dissect_exact::decode_model(&figs, true, 3, &[]),
+        Err(dissect_exact::ExactError::Model(_))
     ));
 }
