@@ -15,6 +15,9 @@ use crate::kept_cubes;
 use crate::output::write_atomic;
 use crate::{InputError, Status};
 
+/// `(K, refuted cubes)` of a K whose refuted cubes are kept for a later run.
+type KeptCubes = (usize, usize);
+
 /// What one certificate claims, for README.txt.
 struct Entry {
     vars: usize,
@@ -234,24 +237,25 @@ impl Writer {
         s
     }
 
-    /// The certificates written, or the first error met writing one. The
+    /// The certificates written (their K) and the refuted cubes kept for
+    /// a later run (`(K, cubes)`), or the first error met writing one. The
     /// proofs of cubes that were not refuted (`*.drat.part`) are removed;
     /// the refuted cubes of an unfinished K stay for a later run.
-    pub fn finish(&self) -> Result<Vec<usize>> {
+    fn finish(&self) -> Result<(Vec<usize>, Vec<KeptCubes>)> {
         let state = self.written.lock().unwrap_or_else(|e| e.into_inner());
-        kept_cubes::tidy(&self.dir);
+        let kept = kept_cubes::tidy(&self.dir);
         let streamed = self.streamed.lock().unwrap_or_else(|e| e.into_inner());
         match state.1.as_ref().or(streamed.as_ref()) {
             Some(e) => Err(anyhow::anyhow!("{e}")),
-            None => Ok(state.0.keys().copied().collect()),
+            None => Ok((state.0.keys().copied().collect(), kept)),
         }
     }
 
     /// The line to print once the run is over (and one per K whose
     /// refuted cubes are kept for a later run).
     pub fn summary(&self) -> Result<String> {
-        let ks = self.finish()?;
-        let kept: String = kept_cubes::tidy(&self.dir)
+        let (ks, kept) = self.finish()?;
+        let kept: String = kept
             .into_iter()
             .map(|(k, cubes)| {
                 format!(

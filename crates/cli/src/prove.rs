@@ -40,6 +40,10 @@ pub struct BoundArgs {
     /// into K connected pieces exists in one solve, and SAT gives one.
     #[arg(long, requires = "dimacs")]
     pub connected: bool,
+    /// With --dimacs or --model: the most memory (MiB) the formula may
+    /// take while it is built; a larger one is refused before building.
+    #[arg(long, value_name = "MIB", default_value_t = 512, value_parser = clap::value_parser!(u64).range(1..=1 << 20))]
+    pub max_encoding_mib: u64,
     /// Solve nothing: read FILE, another SAT solver's model of the
     /// formula of --dimacs (with or without --connected) for the K of
     /// --max-pieces (its `v` lines, or bare literals), and turn it into
@@ -166,10 +170,10 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
                 &figures,
                 !args.no_mirror,
                 k,
-                dissect_exact::DEFAULT_MAX_ENCODING_BYTES,
+                args.max_encoding_mib << 20,
             )
         } else {
-            dissect_exact::dimacs(&figures, !args.no_mirror, k)
+            dissect_exact::dimacs_within(&figures, !args.no_mirror, k, args.max_encoding_mib << 20)
         }
         .map_err(|e| InputError(e.to_string()))?;
         crate::output::write_atomic(path, cnf.text.as_bytes())?;
@@ -266,6 +270,15 @@ fn from_model(
     let mut model = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let line = line.trim();
+        if line.starts_with('s') && line.contains("UNSAT") {
+            return Err(InputError(format!(
+                "{} line {}: the solver answered UNSATISFIABLE: no model, so no dissection into {k} pieces \
+                 (to certify it, have the solver write a DRAT proof and run `dissect check-proof`)",
+                path.display(),
+                i + 1
+            ))
+            .into());
+        }
         // A solver's answer line and comments; `v` lines or bare literals.
         if line.is_empty() || line.starts_with('c') || line.starts_with('s') {
             continue;
@@ -282,8 +295,9 @@ fn from_model(
         }
     }
     let mirror = !args.no_mirror && args.lattice.lattice().supports_mirror();
-    let pieces = dissect_exact::decode_model(figures, mirror, k, &model)
-        .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
+    let pieces =
+        dissect_exact::decode_model_within(figures, mirror, k, &model, args.max_encoding_mib << 20)
+            .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
     let count = pieces[0].len();
     println!(
         "the model of {} is a verified dissection into {count} pieces",

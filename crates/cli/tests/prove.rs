@@ -127,6 +127,21 @@ fn bound_writes_the_dimacs_of_k_pieces() {
         ],
     );
     assert!(!out.status.success());
+    // A formula estimated past --max-encoding-mib is refused before it is
+    // built, naming the cap; the default (512 MiB) builds it.
+    files(dir.path(), &[("c.txt", SQUARES_3_4), ("d.txt", SQUARE_5)]);
+    let large = |more: &[&str]| {
+        let mut args = vec!["bound", "--max-pieces", "25", "--dimacs", "k25.cnf"];
+        args.extend_from_slice(more);
+        args.extend_from_slice(&["c.txt", "d.txt"]);
+        dissect(dir.path(), &args)
+    };
+    let out = large(&["--max-encoding-mib", "1"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("over the cap of 1 MiB"), "{err}");
+    assert!(!dir.path().join("k25.cnf").exists());
+    assert!(large(&[]).status.success());
 }
 
 #[test]
@@ -276,6 +291,14 @@ fn bound_turns_another_solvers_model_into_a_verified_dissection() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
         err.contains("none.txt: the model is no dissection"),
+        "{err}"
+    );
+    std::fs::write(dir.path().join("unsat.txt"), "c cadical\ns UNSATISFIABLE\n").unwrap();
+    let out = decode("unsat.txt");
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("unsat.txt line 2: the solver answered UNSATISFIABLE"),
         "{err}"
     );
     assert!(!dir.path().join("s.json").exists());

@@ -55,8 +55,8 @@ pub use motion::MotionSet;
 pub use placement_encoding::{EncodingSize, MotionEncoding};
 pub use repair::{repair, repair_report, RepairOptions, RepairReport};
 pub use search::{
-    decode_model, dimacs, dimacs_connected, dimacs_within, search, Dimacs, ExactEvent,
-    ExactObserver, ExactOptions, ExactOutcome, Limit, Mode, DEFAULT_MAX_ENCODING_BYTES,
+    decode_model, decode_model_within, dimacs, dimacs_connected, dimacs_within, search, Dimacs,
+    ExactEvent, ExactObserver, ExactOptions, ExactOutcome, Limit, Mode, DEFAULT_MAX_ENCODING_BYTES,
 };
 
 /// Occurs when figures cannot be given to the exact search.

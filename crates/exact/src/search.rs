@@ -871,8 +871,19 @@ pub fn decode_model(
     k: usize,
     model: &[i32],
 ) -> Result<Vec<Vec<Vec<Cell>>>, ExactError> {
+    decode_model_within(figures, mirror, k, model, DEFAULT_MAX_ENCODING_BYTES)
+}
+
+/// [`decode_model`] of a formula built by [`dimacs_connected`] with the
+/// cap `max_bytes` (the same formula must fit again to be decoded).
+pub fn decode_model_within(
+    figures: &[Figure],
+    mirror: bool,
+    k: usize,
+    model: &[i32],
+    cap: u64,
+) -> Result<Vec<Vec<Vec<Cell>>>, ExactError> {
     let stop = AtomicBool::new(false);
-    let cap = DEFAULT_MAX_ENCODING_BYTES;
     let (inst, _, enc) = formula(figures, mirror, k, (cap, false, false), &stop)?;
     let truth: std::collections::HashSet<i32> = model.iter().copied().filter(|&l| l > 0).collect();
     let pieces = to_cells(&inst, &enc.decode_with(&|v| truth.contains(&v)));
