@@ -16,6 +16,7 @@ mod render;
 #[cfg(feature = "serve")]
 mod serve;
 mod solve;
+mod solver_process;
 mod stop;
 mod verify;
 

@@ -51,13 +51,19 @@ pub struct BoundArgs {
     #[arg(long, value_name = "FILE", requires = "max_pieces", conflicts_with_all = ["dimacs", "certificate"])]
     pub model: Option<PathBuf>,
     /// With --model: write the dissection to FILE (solution JSON).
-    #[arg(long, short, value_name = "FILE", requires = "model")]
+    #[arg(long, short, value_name = "FILE")]
     pub output: Option<PathBuf>,
     /// For every "no K-piece dissection" proved by SAT, write DIR/kK.cnf
     /// (the formula), DIR/kK.drat (its DRAT proof of unsatisfiability) and
     /// DIR/README.txt; check them with `dissect check-proof DIR`.
     #[arg(long, value_name = "DIR", conflicts_with = "dimacs")]
     pub certificate: Option<PathBuf>,
+    /// Ask another SAT solver instead of the built-in one: for K from the
+    /// cheap bound up, run `CMD kK.cnf kK.drat` on the formula of "at most K
+    /// connected pieces" (e.g. "cadical --no-binary"); with --certificate
+    /// DIR its refutations and proofs are kept there for check-proof.
+    #[arg(long, value_name = "CMD", conflicts_with_all = ["dimacs", "model"])]
+    pub solver: Option<String>,
     /// Cube-and-conquer on this many threads: each "at most K pieces?" is
     /// split into cubes (the literals of one of its clauses) solved in
     /// parallel; certificates then hold one proof per cube (1: no cubes).
@@ -190,6 +196,12 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         return from_model(&args, &figures, path, k);
     }
     let names = names(&args.figures);
+    if let Some(command) = &args.solver {
+        return with_solver(&args, &figures, &names, command);
+    }
+    if args.output.is_some() {
+        return Err(InputError("-o/--output needs --model or --solver".to_string()).into());
+    }
     let certificates = match &args.certificate {
         Some(dir) => Some(crate::certificate::Writer::new(
             dir,
@@ -214,12 +226,104 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         certificates,
     };
     let report = dissect_engine::bound(&figures, &names, &config, crate::stop::flag(), &observer)
-        .map_err(|e| match e {
-        e @ (EngineError::Figures(_) | EngineError::Exact(_)) => {
+        .map_err(engine_error)?;
+    print_report(&report, &observer)
+}
+
+/// Bad figures and exact-search refusals are the user's input; the rest
+/// is an internal error.
+fn engine_error(e: EngineError) -> anyhow::Error {
+    match e {
+        e @ (EngineError::Figures(_) | EngineError::Exact(_) | EngineError::External(..)) => {
             anyhow::Error::from(InputError(e.to_string()))
         }
         e => e.into(),
-    })?;
+    }
+}
+
+/// `bound --solver CMD`: the engine's `bound_external` with the solver run
+/// as a process; its files in --certificate DIR or a temporary folder.
+fn with_solver(
+    args: &BoundArgs,
+    figures: &[dissect_core::Figure],
+    names: &[String],
+    command: &str,
+) -> Result<Status> {
+    let temp;
+    let dir = match &args.certificate {
+        Some(dir) => {
+            std::fs::create_dir_all(dir)
+                .map_err(|e| InputError(format!("{}: cannot create: {e}", dir.display())))?;
+            dir.clone()
+        }
+        None => {
+            temp = tempfile::tempdir()?;
+            temp.path().to_path_buf()
+        }
+    };
+    let keep = args.certificate.is_some();
+    let solver = crate::solver_process::SolverProcess::new(command, dir.clone(), keep, args.quiet)
+        .ok_or_else(|| InputError("--solver: an empty command".to_string()))?;
+    let config = BoundConfig {
+        mirror: !args.no_mirror,
+        max_pieces: args.max_pieces,
+        time_limit: args.time_limit.unwrap_or_default(),
+        ..BoundConfig::default()
+    };
+    let observer = Lines {
+        quiet: args.quiet,
+        start: Instant::now(),
+        names: names.to_vec(),
+        certificates: None,
+    };
+    let report = dissect_engine::bound_external(
+        figures,
+        names,
+        (&config, args.max_encoding_mib << 20),
+        &solver,
+        crate::stop::flag(),
+        &observer,
+    )
+    .map_err(engine_error)?;
+    if let (Some(found), Some(out)) = (&report.found, &args.output) {
+        let file = found.dissection().to_file(Default::default());
+        crate::output::write_atomic(out, file.to_json())?;
+        println!("wrote {}", out.display());
+    }
+    if keep {
+        let refuted: Vec<usize> = (1..=report.lower_bound.value)
+            .filter(|k| dir.join(format!("k{k}.drat")).exists())
+            .collect();
+        if !refuted.is_empty() {
+            let readme = crate::solver_process::readme(&solver_name(command), &refuted);
+            crate::output::write_atomic(&dir.join("README.txt"), readme)?;
+            println!(
+                "certificates: {} in {} (check with: dissect check-proof {})",
+                refuted
+                    .iter()
+                    .map(|k| format!("k{k}"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                dir.display(),
+                dir.display()
+            );
+        }
+    }
+    print_report(&report, &observer)
+}
+
+/// The solver's program name (the first word of its command).
+fn solver_name(command: &str) -> String {
+    command
+        .split_whitespace()
+        .next()
+        .unwrap_or(command)
+        .to_string()
+}
+
+/// The bound's closing lines: why it stopped, the certificates, and last
+/// `lower bound: K (reason)`.
+fn print_report(report: &dissect_engine::BoundReport, observer: &Lines) -> Result<Status> {
     if let Some(found) = &report.found {
         println!(
             "a {}-piece dissection exists (found by SAT): the bound is optimal",

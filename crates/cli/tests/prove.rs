@@ -349,3 +349,97 @@ fn bound_turns_another_solvers_model_into_a_verified_dissection() {
         4
     );
 }
+
+/// `bound --solver CMD`: another solver answers each K from the cheap
+/// bound up. Its refutation and proof stay in --certificate DIR, which
+/// `check-proof` verifies; its model becomes the -o dissection, verified.
+/// The solver here is CaDiCaL when on the PATH (CI installs it); the
+/// answers of stand-in scripts run everywhere: a solver that cannot run, a
+/// claimed UNSAT without a proof, a bogus proof that check-proof rejects,
+/// and one that never answers, stopped by the time limit with nothing left
+/// behind.
+#[test]
+fn bound_asks_another_solver_and_keeps_its_certificates() {
+    let dir = tempfile::tempdir().unwrap();
+    files(dir.path(), &[("a.txt", HOLE), ("b.txt", SQUARE_4)]);
+    let bound = |solver: &str, more: &[&str]| {
+        let mut args = vec!["bound", "--solver", solver];
+        args.extend_from_slice(more);
+        args.extend_from_slice(&["a.txt", "b.txt"]);
+        dissect(dir.path(), &args)
+    };
+    let out = bound("no-such-solver-anywhere", &[]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("cannot run `no-such-solver-anywhere`"),
+        "{err}"
+    );
+
+    std::fs::write(dir.path().join("liar.sh"), "echo 's UNSATISFIABLE'\n").unwrap();
+    let out = bound("sh liar.sh", &["--certificate", "liar"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("answered UNSATISFIABLE but wrote no proof"),
+        "{err}"
+    );
+    assert!(!dir.path().join("liar/k2.cnf").exists());
+
+    // A proof that proves nothing: kept, but check-proof says so.
+    std::fs::write(
+        dir.path().join("empty.sh"),
+        "echo 's UNSATISFIABLE'\n: > \"$2\"\n",
+    )
+    .unwrap();
+    let out = bound(
+        "sh empty.sh",
+        &["--certificate", "empty", "--max-pieces", "2"],
+    );
+    assert!(out.status.success());
+    assert!(stdout(&out).contains("lower bound: 3 (sh: no 2-piece dissection"));
+    let check = dissect(dir.path(), &["check-proof", "empty"]);
+    assert_eq!(check.status.code(), Some(1), "{}", stdout(&check));
+
+    std::fs::write(dir.path().join("slow.sh"), "sleep 30\n").unwrap();
+    let started = std::time::Instant::now();
+    let out = bound(
+        "sh slow.sh",
+        &["--certificate", "slow", "--time-limit", "1"],
+    );
+    assert!(out.status.success());
+    assert!(started.elapsed().as_secs_f64() < 10.0);
+    assert!(stdout(&out).contains("stopped (time limit or Ctrl-C)"));
+    let left: Vec<_> = std::fs::read_dir(dir.path().join("slow"))
+        .unwrap()
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+
+    if Command::new("cadical").arg("--version").output().is_err() {
+        eprintln!("no cadical on the PATH: the real solver is not run");
+        return;
+    }
+    let out = bound(
+        "cadical --no-binary",
+        &["--certificate", "cert", "-o", "s.json"],
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = stdout(&out);
+    assert!(text.contains("certificates: k2 in cert"), "{text}");
+    assert!(text.contains("a 3-piece dissection exists"), "{text}");
+    assert!(
+        text.contains("lower bound: 3 (cadical: no 2-piece dissection, "),
+        "{text}"
+    );
+    let readme = std::fs::read_to_string(dir.path().join("cert/README.txt")).unwrap();
+    assert!(readme.contains("k2.drat  cadical's DRAT proof"), "{readme}");
+    assert!(!dir.path().join("cert/k3.cnf").exists());
+    let check = dissect(dir.path(), &["check-proof", "cert"]);
+    assert!(check.status.success(), "{}", stdout(&check));
+    assert!(stdout(&check).contains("k2: verified"));
+    python_verify(dir.path(), "square", "s.json", &["a.txt", "b.txt"]);
+}

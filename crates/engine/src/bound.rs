@@ -87,6 +87,19 @@ pub struct BoundReport {
 }
 
 impl BoundReport {
+    /// A report of `lower_bound` and nothing else yet (finished, no
+    /// dissection, no limit met).
+    pub(crate) fn new(lower_bound: LowerBound) -> BoundReport {
+        BoundReport {
+            lower_bound,
+            found: None,
+            end: End::Finished,
+            too_large: None,
+            too_many_cells: None,
+            seconds: 0.0,
+        }
+    }
+
     /// Whether the bound was cut short (time limit, stop, or an encoding
     /// too large).
     pub fn stopped(&self) -> bool {

@@ -42,6 +42,7 @@ mod assemblies;
 mod bound;
 mod disassemble;
 mod enumerate;
+mod external;
 mod interlock;
 mod limits;
 mod monitor;
@@ -59,6 +60,7 @@ pub use dissect_puzzle::assemblies::{AssemblyError, Count};
 pub use dissect_puzzle::disassembly::{Disassembly, DisassemblyError, Plan as DisassemblyPlan};
 pub use dissect_puzzle::{constraints::ConstraintError, Constraints, KeepRegions, Rank, Scores};
 pub use enumerate::{enumerate, EnumerateConfig, EnumeratedClass, EnumerationReport};
+pub use external::{bound_external, ExternalAnswer, ExternalSolver};
 pub use limits::{check_threads, LimitError, TimeLimit, MAX_THREADS};
 pub use options::{
     OptionsError, RunConfig, RunOptions, Strategy, MAX_EXPLORATIONS, MAX_SOLUTIONS,

@@ -52,6 +52,17 @@ pub enum Reason {
         /// pieces was already unsatisfiable).
         cuts: usize,
     },
+    /// Another SAT solver answered UNSAT on the formula of "at most
+    /// `refuted` connected pieces" (`dimacs_connected`); its proof is its
+    /// own, to be checked by `dissect check-proof`.
+    External {
+        /// The piece count proved impossible.
+        refuted: usize,
+        /// Seconds the solver took.
+        seconds: f64,
+        /// The solver (its command).
+        solver: String,
+    },
 }
 
 impl Bound {
@@ -89,6 +100,11 @@ impl Bound {
                     )
                 }
             }
+            Reason::External {
+                refuted,
+                seconds,
+                solver,
+            } => format!("{solver}: no {refuted}-piece dissection, {seconds:.1} s"),
         }
     }
 }

@@ -146,6 +146,10 @@ pub enum EngineError {
     /// ([`ConstraintError::is_impossible`]).
     #[error(transparent)]
     Constraints(#[from] ConstraintError),
+    /// Another SAT solver (named first) could not run or answered
+    /// something that is no answer (`bound --solver`).
+    #[error("{0}: {1}")]
+    External(String, String),
 }
 
 /// Runs `options` on `figures` (named `names` in the answer, input order).

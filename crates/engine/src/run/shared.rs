@@ -404,6 +404,9 @@ pub(crate) fn proof(b: &Bound, names: &[String]) -> String {
     match &b.reason {
         Reason::Sat {
             refuted, seconds, ..
+        }
+        | Reason::External {
+            refuted, seconds, ..
         } => format!(
             "no {refuted}-piece dissection exists; proof {}",
             if *seconds < 10.0 {
