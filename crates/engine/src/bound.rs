@@ -86,6 +86,17 @@ pub struct BoundReport {
     pub seconds: f64,
 }
 
+impl BoundConfig {
+    /// Whether pieces may be turned over in this bound of `figures`
+    /// (`mirror`, where their lattice allows it).
+    pub(crate) fn mirror_for(&self, figures: &[Figure]) -> bool {
+        self.mirror
+            && figures
+                .first()
+                .is_none_or(|f| f.lattice().lattice().supports_mirror())
+    }
+}
+
 impl BoundReport {
     /// A report of `lower_bound` and nothing else yet (finished, no
     /// dissection, no limit met).
@@ -119,10 +130,7 @@ pub fn bound(
 ) -> Result<BoundReport, EngineError> {
     let start = Instant::now();
     let deadline = config.time_limit.deadline_from(start);
-    let mirror = config.mirror
-        && figures
-            .first()
-            .is_none_or(|f| f.lattice().lattice().supports_mirror());
+    let mirror = config.mirror_for(figures);
     let options = ExactOptions {
         mirror,
         mode: Mode::LowerBound,
@@ -191,19 +199,29 @@ pub fn bound(
             _ => {}
         }
         if let Some(pieces) = o.found {
-            let v = Verified::new(
-                figures[0].lattice(),
-                mirror,
-                names.to_vec(),
-                figures,
-                pieces,
-            )
-            .map_err(|e| EngineError::Unverified("SAT", e))?;
-            report.found = Some(v);
+            report.found = Some(verified_sat(figures, names, mirror, pieces)?);
         }
     }
     report.seconds = start.elapsed().as_secs_f64();
     Ok(report)
+}
+
+/// The dissection a SAT model stands for (`pieces[f][i]`, input order),
+/// verified.
+pub(crate) fn verified_sat(
+    figures: &[Figure],
+    names: &[String],
+    mirror: bool,
+    pieces: Vec<Vec<Vec<dissect_core::Cell>>>,
+) -> Result<Verified, EngineError> {
+    Verified::new(
+        figures[0].lattice(),
+        mirror,
+        names.to_vec(),
+        figures,
+        pieces,
+    )
+    .map_err(|e| EngineError::Unverified("SAT", e))
 }
 
 /// The best bound the search's events announced.

@@ -18,11 +18,10 @@ use std::time::Instant;
 use dissect_core::Figure;
 use dissect_exact::{Bound, Dimacs, ExactEvent, Reason};
 
-use crate::bound::{BoundConfig, BoundReport};
+use crate::bound::{verified_sat, BoundConfig, BoundReport};
 use crate::monitor::{monitor, Watch};
 use crate::report::{End, LowerBound};
 use crate::run::{proof, EngineError, EngineEvent, EngineObserver};
-use crate::verified::Verified;
 
 /// What another SAT solver answered on one formula.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -62,10 +61,7 @@ pub fn bound_external(
 ) -> Result<BoundReport, EngineError> {
     let start = Instant::now();
     let deadline = config.time_limit.deadline_from(start);
-    let mirror = config.mirror
-        && figures
-            .first()
-            .is_none_or(|f| f.lattice().lattice().supports_mirror());
+    let mirror = config.mirror_for(figures);
     let cheap = dissect_exact::cheap_bound(figures, mirror)?;
     observer.on_event(&EngineEvent::Exact(&ExactEvent::CheapBound(cheap.clone())));
     let describe = |b: &Bound| LowerBound {
@@ -113,15 +109,7 @@ pub fn bound_external(
                     max_encoding_bytes,
                 )
                 .map_err(|e| EngineError::External(solver.name(), e.to_string()))?;
-                let v = Verified::new(
-                    figures[0].lattice(),
-                    mirror,
-                    names.to_vec(),
-                    figures,
-                    pieces,
-                )
-                .map_err(|e| EngineError::Unverified("SAT", e))?;
-                report.found = Some(v);
+                report.found = Some(verified_sat(figures, names, mirror, pieces)?);
                 break;
             }
             ExternalAnswer::Unknown => break,
