@@ -291,9 +291,7 @@ fn with_solver(
         println!("wrote {}", out.display());
     }
     if keep {
-        let refuted: Vec<usize> = (1..=report.lower_bound.value)
-            .filter(|k| dir.join(format!("k{k}.drat")).exists())
-            .collect();
+        let refuted = solver.refuted();
         if !refuted.is_empty() {
             let readme = crate::solver_process::readme(&solver_name(command), &refuted);
             crate::output::write_atomic(&dir.join("README.txt"), readme)?;

@@ -48,6 +48,8 @@ pub struct SolverProcess {
     /// a temporary one.
     keep: bool,
     quiet: bool,
+    /// The K it refuted, in order.
+    refuted: std::sync::Mutex<Vec<usize>>,
 }
 
 impl SolverProcess {
@@ -62,7 +64,17 @@ impl SolverProcess {
             dir,
             keep,
             quiet,
+            refuted: std::sync::Mutex::new(Vec::new()),
         })
+    }
+
+    /// The K this solver refuted (their certificates are kept when the
+    /// folder is).
+    pub fn refuted(&self) -> Vec<usize> {
+        self.refuted
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .clone()
     }
 
     fn paths(&self, k: usize) -> [PathBuf; 3] {
@@ -138,6 +150,12 @@ impl ExternalSolver for SolverProcess {
             ));
         }
         self.remove(k, !refuted);
+        if refuted {
+            self.refuted
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .push(k);
+        }
         answer
     }
 }
