@@ -414,6 +414,10 @@ class LowerBound:
         self.reason: str = result["reason"]
         #: Whether a time limit or Ctrl-C ended the search before it was done.
         self.stopped: bool = result["stopped"]
+        #: The piece counts another solver refuted, each with its formula and
+        #: proof in the ``certificate`` folder (``bound(solver=...,
+        #: certificate=...)``); empty otherwise.
+        self.certificates: List[int] = list(result.get("certificates", []))
         #: A dissection with ``value`` pieces found by the SAT search (then
         #: the bound is optimal), or None.
         self.dissection: Optional[Dissection] = None
@@ -532,12 +536,27 @@ def bound(
     time_limit: Optional[float] = None,
     max_pieces: Optional[int] = None,
     mirror: bool = True,
+    solver: Optional[str] = None,
+    certificate: Union[str, "os.PathLike[str]", None] = None,
 ) -> LowerBound:
     """Proves a lower bound on the number of pieces (``dissect bound``):
     components, incompatible cells, then SAT for 1, 2, ... pieces until a
-    dissection is met, ``max_pieces``, ``time_limit`` or Ctrl-C."""
+    dissection is met, ``max_pieces``, ``time_limit`` or Ctrl-C.
+
+    With ``solver`` (a command such as ``"cadical --no-binary"``, run as
+    ``CMD kK.cnf kK.drat``) another SAT solver answers each K instead
+    (``dissect bound --solver``); with ``certificate`` (a folder) its
+    refutations and DRAT proofs are kept there for ``dissect check-proof``
+    and listed in ``LowerBound.certificates``."""
     figures = _figures(figures)
-    result = _dissect.bound(figures, time_limit=time_limit, max_pieces=max_pieces, mirror=mirror)
+    result = _dissect.bound(
+        figures,
+        time_limit=time_limit,
+        max_pieces=max_pieces,
+        mirror=mirror,
+        solver=solver,
+        certificate=None if certificate is None else os.fspath(certificate),
+    )
     return LowerBound(figures, result)
 
 

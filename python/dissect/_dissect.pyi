@@ -78,6 +78,8 @@ def bound(
     time_limit: Optional[float] = None,
     max_pieces: Optional[int] = None,
     mirror: bool = True,
+    solver: Optional[str] = None,
+    certificate: Optional[str] = None,
 ) -> Dict[str, Any]: ...
 def verify(figures: Sequence[Figure], solution: str) -> int: ...
 def solution_json(

@@ -584,13 +584,15 @@ pub(crate) fn pieces_to_py<'py>(
 
 /// Proves a lower bound (see `dissect.bound`); returns a dict.
 #[pyfunction]
-#[pyo3(signature = (figures, time_limit = None, max_pieces = None, mirror = true))]
+#[pyo3(signature = (figures, time_limit = None, max_pieces = None, mirror = true, solver = None, certificate = None))]
 pub(crate) fn bound<'py>(
     py: Python<'py>,
     figures: Vec<PyRef<'py, PyFigure>>,
     time_limit: Option<f64>,
     max_pieces: Option<usize>,
     mirror: bool,
+    solver: Option<String>,
+    certificate: Option<std::path::PathBuf>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (figs, names) = problem(py, &figures)?;
     let lattice = figs[0].lattice();
@@ -603,10 +605,34 @@ pub(crate) fn bound<'py>(
         cube_proofs: None,
         threads: 1,
     };
+    let process = match (&solver, &certificate) {
+        (Some(command), dir) => Some(
+            dissect_solver_process::SolverProcess::new(command, dir.as_deref())
+                .map_err(|e| error(py, Kind::Option, format!("solver: {e}")))?,
+        ),
+        (None, Some(_)) => {
+            return Err(error(
+                py,
+                Kind::Option,
+                "certificate needs solver (another SAT solver's proofs; `dissect bound \
+                 --certificate` writes the built-in solver's)"
+                    .to_string(),
+            ))
+        }
+        (None, None) => None,
+    };
     // The engine keeps the time limit; the watcher raises `stop` on Ctrl-C.
     let stop = AtomicBool::new(false);
-    let run = watched(py, &stop, None, || {
-        dissect_engine::bound(&figs, &names, &config, &stop, &())
+    let run = watched(py, &stop, None, || match &process {
+        Some(p) => dissect_engine::bound_external(
+            &figs,
+            &names,
+            (&config, dissect_exact::DEFAULT_MAX_ENCODING_BYTES),
+            p,
+            &stop,
+            &(),
+        ),
+        None => dissect_engine::bound(&figs, &names, &config, &stop, &()),
     })?;
     let report = run
         .value
@@ -626,6 +652,20 @@ pub(crate) fn bound<'py>(
         Some(v) => out.set_item("pieces", pieces_to_py(py, lattice, v.pieces())?)?,
         None => out.set_item("pieces", py.None())?,
     }
+    let refuted = match &process {
+        Some(p) => p
+            .finish()
+            .map_err(|e| error(py, Kind::Option, format!("solver: {e}")))?,
+        None => Vec::new(),
+    };
+    out.set_item(
+        "certificates",
+        if certificate.is_some() {
+            refuted
+        } else {
+            Vec::new()
+        },
+    )?;
     Ok(out)
 }
 

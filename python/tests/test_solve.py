@@ -101,6 +101,38 @@ def test_bound() -> None:
     assert not b.stopped and b.dissection is None
 
 
+HOLE = Figure.from_text("#####\n#..##\n#..##\n#####\n")
+SQUARE_4 = Figure.from_text("####\n####\n####\n####\n")
+
+
+def test_bound_by_another_solver(tmp_path: Path) -> None:
+    """``bound(solver=...)``: stand-in solvers everywhere, CaDiCaL when on
+    the PATH (CI installs it), its certificate verified by check-proof."""
+    liar = tmp_path / "liar.sh"
+    liar.write_text("echo 's UNSATISFIABLE'\n")
+    with pytest.raises(dissect.DissectError) as e:
+        dissect.bound([HOLE, SQUARE_4], solver=f"sh {liar}", certificate=tmp_path / "liar")
+    assert "wrote no proof" in str(e.value)
+    with pytest.raises(dissect.OptionError):
+        dissect.bound([HOLE, SQUARE_4], certificate=tmp_path / "c")
+    with pytest.raises(dissect.OptionError):
+        dissect.bound([HOLE, SQUARE_4], solver=" ")
+    slow = tmp_path / "slow.sh"
+    slow.write_text("sleep 30\n")
+    b = dissect.bound([HOLE, SQUARE_4], solver=f"sh {slow}", time_limit=1)
+    assert b.stopped and b.certificates == []
+    try:
+        subprocess.run(["cadical", "--version"], capture_output=True, check=True)
+    except (OSError, subprocess.CalledProcessError):
+        pytest.skip("no cadical on the PATH")
+    cert = tmp_path / "cert"
+    b = dissect.bound([HOLE, SQUARE_4], solver="cadical --no-binary", certificate=cert)
+    assert b.value == 3 and "cadical: no 2-piece dissection" in b.reason
+    assert b.certificates == [2] and not b.stopped
+    assert b.dissection is not None and b.dissection.piece_count == 3 and b.dissection.verify()
+    assert (cert / "k2.cnf").exists() and (cert / "README.txt").exists()
+
+
 def test_no_dissection_found_within_max_pieces() -> None:
     figures, _ = instance("squares-3-4-split-to-5", "square")
     with pytest.raises(dissect.NoDissectionFound) as e:

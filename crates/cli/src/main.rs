@@ -16,7 +16,6 @@ mod render;
 #[cfg(feature = "serve")]
 mod serve;
 mod solve;
-mod solver_process;
 mod stop;
 mod verify;
 

@@ -249,21 +249,22 @@ fn with_solver(
     names: &[String],
     command: &str,
 ) -> Result<Status> {
-    let temp;
-    let dir = match &args.certificate {
-        Some(dir) => {
-            std::fs::create_dir_all(dir)
-                .map_err(|e| InputError(format!("{}: cannot create: {e}", dir.display())))?;
-            dir.clone()
-        }
-        None => {
-            temp = tempfile::tempdir()?;
-            temp.path().to_path_buf()
-        }
-    };
+    let mut solver =
+        dissect_solver_process::SolverProcess::new(command, args.certificate.as_deref())
+            .map_err(|e| InputError(format!("--solver: {e}")))?;
+    if !args.quiet {
+        let program = solver_name(command);
+        solver = solver.with_progress(Box::new(move |k, path, cnf| {
+            eprintln!(
+                "[solver] {program} on {}: at most {k} connected pieces, {} variables, {} clauses",
+                path.display(),
+                cnf.vars,
+                cnf.clauses
+            );
+        }));
+    }
     let keep = args.certificate.is_some();
-    let solver = crate::solver_process::SolverProcess::new(command, dir.clone(), keep, args.quiet)
-        .ok_or_else(|| InputError("--solver: an empty command".to_string()))?;
+    let dir = solver.dir().to_path_buf();
     let config = BoundConfig {
         mirror: !args.no_mirror,
         max_pieces: args.max_pieces,
@@ -290,22 +291,20 @@ fn with_solver(
         crate::output::write_atomic(out, file.to_json())?;
         println!("wrote {}", out.display());
     }
-    if keep {
-        let refuted = solver.refuted();
-        if !refuted.is_empty() {
-            let readme = crate::solver_process::readme(&solver_name(command), &refuted);
-            crate::output::write_atomic(&dir.join("README.txt"), readme)?;
-            println!(
-                "certificates: {} in {} (check with: dissect check-proof {})",
-                refuted
-                    .iter()
-                    .map(|k| format!("k{k}"))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-                dir.display(),
-                dir.display()
-            );
-        }
+    let refuted = solver
+        .finish()
+        .map_err(|e| InputError(format!("--solver: {e}")))?;
+    if keep && !refuted.is_empty() {
+        println!(
+            "certificates: {} in {} (check with: dissect check-proof {})",
+            refuted
+                .iter()
+                .map(|k| format!("k{k}"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            dir.display(),
+            dir.display()
+        );
     }
     print_report(&report, &observer)
 }

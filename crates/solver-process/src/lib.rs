@@ -1,12 +1,14 @@
 //! `bound --solver CMD`: another SAT solver run as a process, for the
 //! engine's `bound_external` (which decides what to ask and what the
-//! answers prove). For each K the formula goes to `DIR/kK.cnf` and the
-//! solver runs as `CMD DIR/kK.cnf DIR/kK.drat` (the DIMACS input and the
-//! proof output, as CaDiCaL, Kissat and most solvers take them), its
-//! standard output read for the `s` line and the model's `v` lines. A
-//! refuted K keeps its formula and proof in DIR (a certificate
-//! `dissect check-proof DIR` checks); anything else is removed. Stopped
-//! (time limit, Ctrl-C), the solver is killed and its files removed.
+//! answers prove); the front ends (`dissect bound --solver`, Python's
+//! `dissect.bound(solver=...)`) share it. For each K the formula goes to
+//! `DIR/kK.cnf` and the solver runs as `CMD DIR/kK.cnf DIR/kK.drat` (the
+//! DIMACS input and the proof output, as CaDiCaL, Kissat and most solvers
+//! take them), its standard output read for the `s` line and the model's
+//! `v` lines. A refuted K keeps its formula and proof in DIR (a
+//! certificate `dissect check-proof DIR` checks) when DIR is the caller's;
+//! anything else is removed. Stopped (time limit, Ctrl-C), the solver is
+//! killed and its files removed.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -20,7 +22,7 @@ use dissect_exact::Dimacs;
 const POLL: Duration = Duration::from_millis(20);
 
 /// The README.txt of a folder of another solver's certificates.
-pub fn readme(program: &str, refuted: &[usize]) -> String {
+fn readme(program: &str, refuted: &[usize]) -> String {
     let mut s = format!(
         "Certificates written by `dissect bound --solver`: another SAT solver ({program})\n\
          refuted the formula of \"at most K connected pieces\" for each K below.\n\n"
@@ -39,33 +41,63 @@ pub fn readme(program: &str, refuted: &[usize]) -> String {
     s
 }
 
+/// Told when a formula goes to the solver: K, the formula's file and the
+/// formula.
+pub type OnSolve = Box<dyn Fn(usize, &Path, &Dimacs) + Sync>;
+
 /// A solver command and the folder its files go to.
 pub struct SolverProcess {
     program: String,
     args: Vec<String>,
     dir: PathBuf,
-    /// Whether the proofs are kept (`--certificate DIR`) or the folder is
-    /// a temporary one.
+    /// Whether the proofs are kept (the caller's folder) or the folder is
+    /// a temporary one (`temp`, removed with the value).
     keep: bool,
-    quiet: bool,
+    temp: Option<tempfile::TempDir>,
+    on_solve: Option<OnSolve>,
     /// The K it refuted, in order.
     refuted: std::sync::Mutex<Vec<usize>>,
 }
 
 impl SolverProcess {
     /// `command` split at white space (the program, then its arguments);
-    /// files in `dir`, kept as certificates when `keep`.
-    pub fn new(command: &str, dir: PathBuf, keep: bool, quiet: bool) -> Option<SolverProcess> {
+    /// files in `dir` (made if missing), kept as certificates, or in a
+    /// temporary folder when `None`. An error for an empty command or a
+    /// folder that cannot be made.
+    pub fn new(command: &str, dir: Option<&Path>) -> Result<SolverProcess, String> {
         let mut words = command.split_whitespace().map(String::from);
-        let program = words.next()?;
-        Some(SolverProcess {
+        let program = words.next().ok_or("an empty solver command")?;
+        let (dir, temp) = match dir {
+            Some(d) => {
+                std::fs::create_dir_all(d)
+                    .map_err(|e| format!("{}: cannot create: {e}", d.display()))?;
+                (d.to_path_buf(), None)
+            }
+            None => {
+                let t = tempfile::tempdir().map_err(|e| format!("a temporary folder: {e}"))?;
+                (t.path().to_path_buf(), Some(t))
+            }
+        };
+        Ok(SolverProcess {
             program,
             args: words.collect(),
             dir,
-            keep,
-            quiet,
+            keep: temp.is_none(),
+            temp,
+            on_solve: None,
             refuted: std::sync::Mutex::new(Vec::new()),
         })
+    }
+
+    /// The same, telling `on_solve` of each formula before the solver runs.
+    pub fn with_progress(mut self, on_solve: OnSolve) -> SolverProcess {
+        self.on_solve = Some(on_solve);
+        self
+    }
+
+    /// The folder of its files (a temporary one unless given).
+    pub fn dir(&self) -> &Path {
+        self.temp.as_ref().map_or(&self.dir, |t| t.path())
     }
 
     /// The K this solver refuted (their certificates are kept when the
@@ -75,6 +107,17 @@ impl SolverProcess {
             .lock()
             .unwrap_or_else(|e| e.into_inner())
             .clone()
+    }
+
+    /// Once the bound is over: writes `README.txt` ([`readme`]) into a kept
+    /// folder where some K was refuted; the refuted K.
+    pub fn finish(&self) -> Result<Vec<usize>, String> {
+        let refuted = self.refuted();
+        if self.keep && !refuted.is_empty() {
+            let text = readme(&self.program, &refuted);
+            write_atomic(&self.dir.join("README.txt"), text.as_bytes())?;
+        }
+        Ok(refuted)
     }
 
     fn paths(&self, k: usize) -> [PathBuf; 3] {
@@ -99,15 +142,9 @@ impl ExternalSolver for SolverProcess {
 
     fn solve(&self, k: usize, cnf: &Dimacs, stop: &AtomicBool) -> Result<ExternalAnswer, String> {
         let [cnf_path, drat, out_path] = self.paths(k);
-        crate::output::write_atomic(&cnf_path, cnf.text.as_bytes()).map_err(|e| e.to_string())?;
-        if !self.quiet {
-            eprintln!(
-                "[solver] {} on {}: at most {k} connected pieces, {} variables, {} clauses",
-                self.program,
-                cnf_path.display(),
-                cnf.vars,
-                cnf.clauses
-            );
+        write_atomic(&cnf_path, cnf.text.as_bytes())?;
+        if let Some(tell) = &self.on_solve {
+            tell(k, &cnf_path, cnf);
         }
         let out = std::fs::File::create(&out_path)
             .map_err(|e| format!("{}: cannot write: {e}", out_path.display()))?;
@@ -158,6 +195,21 @@ impl ExternalSolver for SolverProcess {
         }
         answer
     }
+}
+
+/// Writes `bytes` to `path` whole or not at all (a temporary file in the
+/// same folder, renamed over it).
+fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), String> {
+    use std::io::Write;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let mut tmp = tempfile::NamedTempFile::new_in(dir)
+        .map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
+    tmp.write_all(bytes)
+        .and_then(|()| tmp.as_file().sync_all())
+        .map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
+    tmp.persist(path)
+        .map_err(|e| format!("{}: cannot write: {}", path.display(), e.error))?;
+    Ok(())
 }
 
 /// The answer in a solver's standard output (`s SATISFIABLE` with `v`
