@@ -109,7 +109,7 @@ impl SolverProcess {
             .clone()
     }
 
-    /// Once the bound is over: writes `README.txt` ([`readme`]) into a kept
+    /// Once the bound is over: writes `README.txt` (what each file claims) into a kept
     /// folder where some K was refuted; the refuted K.
     pub fn finish(&self) -> Result<Vec<usize>, String> {
         let refuted = self.refuted();
