@@ -82,6 +82,52 @@ fn bound_writes_certificates_that_check_proof_verifies() {
     );
 }
 
+/// A proof read from a named pipe as it is written (the way to check a
+/// proof too large to store: the solver writes into the pipe): verified as
+/// the same proof from a file is.
+#[cfg(unix)]
+#[test]
+fn check_proof_reads_a_proof_from_a_named_pipe() {
+    let dir = setup();
+    let out = dissect(
+        dir.path(),
+        &[
+            "bound",
+            "-q",
+            "--max-pieces",
+            "2",
+            "--certificate",
+            "cert",
+            "a.txt",
+            "b.txt",
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out));
+    let cert = dir.path().join("cert");
+    let piped = dir.path().join("piped");
+    std::fs::create_dir(&piped).unwrap();
+    std::fs::copy(cert.join("k2.cnf"), piped.join("k2.cnf")).unwrap();
+    let fifo = piped.join("k2.drat");
+    let made = Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .expect("mkfifo runs");
+    assert!(made.success());
+    let proof = std::fs::read(cert.join("k2.drat")).unwrap();
+    // The writer blocks until check-proof opens the pipe for reading.
+    let writer = std::thread::spawn(move || std::fs::write(fifo, proof).unwrap());
+    let out = dissect(dir.path(), &["check-proof", "piped"]);
+    // Asserted before the join: a check that never opened the pipe leaves
+    // the writer blocked, and the failing test must not wait for it.
+    assert!(out.status.success(), "{}", text(&out));
+    writer.join().unwrap();
+    assert!(
+        String::from_utf8_lossy(&out.stdout).ends_with("verified: 1 certificate (k2)\n"),
+        "{}",
+        text(&out)
+    );
+}
+
 #[test]
 fn a_formula_with_clauses_removed_fails_and_corruption_names_file_and_line() {
     let dir = setup();
