@@ -42,6 +42,7 @@ from ._errors import (
     FigureError,
     InvalidSolution,
     NoDissectionFound,
+    CertificateError,
     OptionError,
     ProblemError,
 )
@@ -71,6 +72,9 @@ __all__ = [
     "OptionError",
     "InvalidSolution",
     "NoDissectionFound",
+    "CertificateError",
+    "check_proof",
+    "ProofCheck",
 ]
 
 #: The piece colours (``#rrggbb``): piece ``i`` is ``PALETTE[i]`` in every
@@ -414,9 +418,9 @@ class LowerBound:
         self.reason: str = result["reason"]
         #: Whether a time limit or Ctrl-C ended the search before it was done.
         self.stopped: bool = result["stopped"]
-        #: The piece counts another solver refuted, each with its formula and
-        #: proof in the ``certificate`` folder (``bound(solver=...,
-        #: certificate=...)``); empty otherwise.
+        #: With ``certificate``: the piece counts refuted, each with its
+        #: formula and proof in that folder (``check_proof`` replays them);
+        #: empty otherwise.
         self.certificates: List[int] = list(result.get("certificates", []))
         #: A dissection with ``value`` pieces found by the SAT search (then
         #: the bound is optimal), or None.
@@ -543,11 +547,15 @@ def bound(
     components, incompatible cells, then SAT for 1, 2, ... pieces until a
     dissection is met, ``max_pieces``, ``time_limit`` or Ctrl-C.
 
-    With ``solver`` (a command such as ``"cadical --no-binary"``, run as
-    ``CMD kK.cnf kK.drat``) another SAT solver answers each K instead
-    (``dissect bound --solver``); with ``certificate`` (a folder) its
-    refutations and DRAT proofs are kept there for ``dissect check-proof``
-    and listed in ``LowerBound.certificates``."""
+    With ``certificate`` (a folder) every "no K-piece dissection" the SAT
+    search proves is written there as ``kK.cnf`` (the formula) and
+    ``kK.drat`` (its DRAT proof), with ``README.txt``
+    (``dissect bound --certificate``), listed in
+    ``LowerBound.certificates``; ``check_proof`` replays them. With
+    ``solver`` (a command such as ``"cadical --no-binary"``, run as ``CMD
+    kK.cnf kK.drat``) another SAT solver answers each K instead
+    (``dissect bound --solver``), its refutations and proofs kept the same
+    way."""
     figures = _figures(figures)
     result = _dissect.bound(
         figures,
@@ -558,6 +566,45 @@ def bound(
         certificate=None if certificate is None else os.fspath(certificate),
     )
     return LowerBound(figures, result)
+
+
+class ProofCheck:
+    """What ``check_proof`` found: one entry per certificate of the folder.
+    True when every certificate verified."""
+
+    def __init__(self, result: Dict[str, Any]):
+        #: Whether every certificate verified.
+        self.verified: bool = result["verified"]
+        #: The last line ``dissect check-proof`` prints: ``verified: 2
+        #: certificates (k3, k4)`` or ``failed: 1 of 2 certificates do not
+        #: verify``.
+        self.verdict: str = result["verdict"]
+        #: Per certificate, by K: ``k``, ``verified``, ``line`` (as
+        #: ``check-proof`` prints it), and ``clauses``, ``cubes``, ``lemmas``,
+        #: ``rat_lemmas``, ``deletions`` when verified, or ``failure`` (the
+        #: file and line where the replay failed).
+        self.certificates: List[Dict[str, Any]] = list(result["certificates"])
+
+    def __bool__(self) -> bool:
+        return self.verified
+
+    def __repr__(self) -> str:
+        return f"<ProofCheck {self.verdict}>"
+
+
+def check_proof(
+    dir: Union[str, "os.PathLike[str]"],
+    progress: Optional[Callable[[str], object]] = None,
+) -> ProofCheck:
+    """Replays every certificate of ``dir`` (written by ``bound(...,
+    certificate=dir)`` or ``dissect bound --certificate``) with the
+    project's independent DRAT checker, as ``dissect check-proof`` does: a
+    proof is read a line at a time (it may be a named pipe that a solver is
+    writing). ``progress(line)`` is called as each certificate ends. A
+    proof that does not refute its formula is reported in the result (not
+    raised); a folder without certificates or a malformed file raises
+    ``CertificateError``; Ctrl-C stops the check."""
+    return ProofCheck(_dissect.check_proof(os.fspath(dir), progress=progress))
 
 
 def verify(

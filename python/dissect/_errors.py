@@ -27,3 +27,11 @@ class InvalidSolution(DissectError, ValueError):
 class NoDissectionFound(DissectError):
     """The search ended (time limit, max_pieces) without a dissection; the
     message says why and how close the best candidate came."""
+
+
+class CertificateError(DissectError, ValueError):
+    """A certificate folder or file that ``check_proof`` cannot read: no
+    ``kK.cnf`` in it, a formula without its proof, a file that is not text
+    or not DIMACS/DRAT (the message names the file and line). A proof that
+    reads but does not refute its formula is not an error: ``check_proof``
+    reports it as failed."""

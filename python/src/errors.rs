@@ -16,6 +16,8 @@ pub(crate) enum Kind {
     InvalidSolution,
     /// The search ended without a dissection.
     NotFound,
+    /// A certificate folder or file that is not what it should be.
+    Certificate,
 }
 
 impl Kind {
@@ -26,6 +28,7 @@ impl Kind {
             Kind::Option => "OptionError",
             Kind::InvalidSolution => "InvalidSolution",
             Kind::NotFound => "NoDissectionFound",
+            Kind::Certificate => "CertificateError",
         }
     }
 }

@@ -16,6 +16,7 @@ mod enumerate;
 mod errors;
 mod figure;
 mod picture;
+mod proof;
 mod puzzle;
 mod run;
 mod solve;
@@ -27,6 +28,7 @@ fn _dissect(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(solve::solve, m)?)?;
     m.add_function(wrap_pyfunction!(solve::bound, m)?)?;
     m.add_function(wrap_pyfunction!(solve::verify, m)?)?;
+    m.add_function(wrap_pyfunction!(proof::check_proof, m)?)?;
     m.add_function(wrap_pyfunction!(solve::solution_json, m)?)?;
     m.add_function(wrap_pyfunction!(solve::option_names, m)?)?;
     m.add_function(wrap_pyfunction!(assemblies::assemblies, m)?)?;

@@ -597,34 +597,33 @@ pub(crate) fn bound<'py>(
     let (figs, names) = problem(py, &figures)?;
     let lattice = figs[0].lattice();
     let mirror = mirror && lattice.lattice().supports_mirror();
+    let process = match &solver {
+        Some(command) => Some(
+            dissect_solver_process::SolverProcess::new(command, certificate.as_deref())
+                .map_err(|e| error(py, Kind::Option, format!("solver: {e}")))?,
+        ),
+        None => None,
+    };
+    // The built-in solver's certificates (another solver's are its files).
+    let writer = match (&process, &certificate) {
+        (None, Some(dir)) => Some(
+            dissect_certificate::Writer::new(dir, &names, lattice.name(), mirror)
+                .map_err(|e| crate::proof::certificate_error(py, e))?,
+        ),
+        _ => None,
+    };
     let config = BoundConfig {
         mirror,
         max_pieces,
         time_limit: crate::run::time_limit(time_limit).map_err(|m| error(py, Kind::Option, m))?,
-        certify: false,
-        cube_proofs: None,
+        certify: writer.is_some(),
+        cube_proofs: writer.as_ref().map(|w| w.cube_proofs()),
         threads: 1,
-    };
-    let process = match (&solver, &certificate) {
-        (Some(command), dir) => Some(
-            dissect_solver_process::SolverProcess::new(command, dir.as_deref())
-                .map_err(|e| error(py, Kind::Option, format!("solver: {e}")))?,
-        ),
-        (None, Some(_)) => {
-            return Err(error(
-                py,
-                Kind::Option,
-                "certificate needs solver (another SAT solver's proofs; `dissect bound \
-                 --certificate` writes the built-in solver's)"
-                    .to_string(),
-            ))
-        }
-        (None, None) => None,
     };
     // The engine keeps the time limit; the watcher raises `stop` on Ctrl-C.
     let stop = AtomicBool::new(false);
-    let run = watched(py, &stop, None, || match &process {
-        Some(p) => dissect_engine::bound_external(
+    let run = watched(py, &stop, None, || match (&process, &writer) {
+        (Some(p), _) => dissect_engine::bound_external(
             &figs,
             &names,
             (&config, dissect_exact::DEFAULT_MAX_ENCODING_BYTES),
@@ -632,7 +631,10 @@ pub(crate) fn bound<'py>(
             &stop,
             &(),
         ),
-        None => dissect_engine::bound(&figs, &names, &config, &stop, &()),
+        (None, Some(w)) => {
+            dissect_engine::bound(&figs, &names, &config, &stop, &crate::proof::Certifying(w))
+        }
+        (None, None) => dissect_engine::bound(&figs, &names, &config, &stop, &()),
     })?;
     let report = run
         .value
@@ -652,11 +654,16 @@ pub(crate) fn bound<'py>(
         Some(v) => out.set_item("pieces", pieces_to_py(py, lattice, v.pieces())?)?,
         None => out.set_item("pieces", py.None())?,
     }
-    let refuted = match &process {
-        Some(p) => p
+    let refuted = match (&process, &writer) {
+        (Some(p), _) => p
             .finish()
             .map_err(|e| error(py, Kind::Option, format!("solver: {e}")))?,
-        None => Vec::new(),
+        (None, Some(w)) => {
+            w.finish()
+                .map_err(|e| crate::proof::certificate_error(py, e))?
+                .certified
+        }
+        (None, None) => Vec::new(),
     };
     out.set_item(
         "certificates",

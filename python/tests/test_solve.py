@@ -114,8 +114,6 @@ def test_bound_by_another_solver(tmp_path: Path) -> None:
         dissect.bound([HOLE, SQUARE_4], solver=f"sh {liar}", certificate=tmp_path / "liar")
     assert "wrote no proof" in str(e.value)
     with pytest.raises(dissect.OptionError):
-        dissect.bound([HOLE, SQUARE_4], certificate=tmp_path / "c")
-    with pytest.raises(dissect.OptionError):
         dissect.bound([HOLE, SQUARE_4], solver=" ")
     slow = tmp_path / "slow.sh"
     slow.write_text("sleep 30\n")
@@ -131,6 +129,41 @@ def test_bound_by_another_solver(tmp_path: Path) -> None:
     assert b.certificates == [2] and not b.stopped
     assert b.dissection is not None and b.dissection.piece_count == 3 and b.dissection.verify()
     assert (cert / "k2.cnf").exists() and (cert / "README.txt").exists()
+    assert dissect.check_proof(cert).verdict == "verified: 1 certificate (k2)"
+
+
+def test_bound_writes_certificates_that_check_proof_verifies(tmp_path: Path) -> None:
+    """The built-in solver's certificates (``bound(certificate=...)``),
+    replayed by ``check_proof``; a proof with its lemmas gone fails; a
+    folder without certificates raises ``CertificateError``."""
+    cert = tmp_path / "cert"
+    b = dissect.bound([HOLE, SQUARE_4], max_pieces=2, certificate=cert)
+    assert b.value == 3 and b.certificates == [1, 2]
+    assert "k2.cnf, k2.drat: no dissection into at most 2 pieces" in (
+        cert / "README.txt"
+    ).read_text()
+    lines: List[str] = []
+    check = dissect.check_proof(cert, progress=lines.append)
+    assert check and check.verified
+    assert check.verdict == "verified: 2 certificates (k1, k2)"
+    assert [c["k"] for c in check.certificates] == [1, 2]
+    assert lines == [c["line"] for c in check.certificates]
+    assert lines[1].startswith("k2: verified: no dissection into at most 2 pieces")
+
+    (cert / "k2.drat").write_text("0\n")
+    check = dissect.check_proof(str(cert))
+    assert not check and check.certificates[0]["verified"]
+    assert not check.certificates[1]["verified"]
+    assert "k2.drat: proof line 1" in check.certificates[1]["failure"]
+    assert check.verdict == "failed: 1 of 2 certificates do not verify"
+
+    with pytest.raises(dissect.CertificateError) as e:
+        dissect.check_proof(tmp_path)
+    assert "no certificate" in str(e.value)
+    (tmp_path / "file").write_text("")
+    with pytest.raises(dissect.CertificateError) as e:
+        dissect.bound([HOLE, SQUARE_4], max_pieces=2, certificate=tmp_path / "file")
+    assert "not a folder" in str(e.value)
 
 
 def test_no_dissection_found_within_max_pieces() -> None:

@@ -7,7 +7,6 @@ mod disassemble;
 mod enumerate;
 mod info;
 mod input;
-mod kept_cubes;
 mod output;
 mod progress;
 mod prove;

@@ -80,7 +80,7 @@ pub struct Lines {
     pub start: Instant,
     pub names: Vec<String>,
     /// Writes the certificates (`--certificate`).
-    pub certificates: Option<crate::certificate::Writer>,
+    pub certificates: Option<dissect_certificate::Writer>,
 }
 
 impl ExactObserver for Lines {
@@ -203,11 +203,11 @@ pub fn bound(args: BoundArgs) -> Result<Status> {
         return Err(InputError("-o/--output needs --model or --solver".to_string()).into());
     }
     let certificates = match &args.certificate {
-        Some(dir) => Some(crate::certificate::Writer::new(
+        Some(dir) => Some(crate::certificate::writer(
             dir,
             &args.figures,
-            &args.lattice.to_string(),
-            !args.no_mirror && args.lattice.lattice().supports_mirror(),
+            args.lattice,
+            args.no_mirror,
         )?),
         None => None,
     };
@@ -342,7 +342,7 @@ fn print_report(report: &dissect_engine::BoundReport, observer: &Lines) -> Resul
         println!("stopped (time limit or Ctrl-C); the bound below is the best proved");
     }
     if let Some(w) = &observer.certificates {
-        println!("{}", w.summary()?);
+        println!("{}", w.summary().map_err(crate::output::cli_error)?);
     }
     println!(
         "lower bound: {} ({})",

@@ -30,7 +30,7 @@ struct Display {
     progress: Progress,
     exact: Option<crate::prove::Lines>,
     /// Writes the certificates (`--certificate`).
-    certificates: Option<crate::certificate::Writer>,
+    certificates: Option<dissect_certificate::Writer>,
 }
 
 impl EngineObserver for Display {
@@ -91,11 +91,11 @@ fn display(args: &SolveArgs, names: &[String], start: Instant) -> Result<Display
             certificates: None,
         }),
         certificates: match &args.certificate {
-            Some(dir) => Some(crate::certificate::Writer::new(
+            Some(dir) => Some(crate::certificate::writer(
                 dir,
                 &args.figures,
-                &args.lattice.to_string(),
-                !args.no_mirror && args.lattice.lattice().supports_mirror(),
+                args.lattice,
+                args.no_mirror,
             )?),
             None => None,
         },
@@ -126,10 +126,11 @@ pub fn run(args: SolveArgs) -> Result<Status> {
     let report = dissect_engine::run(&figures, &names, &options, stop, &display);
     display.progress.finish();
     // The certificates' line on stderr (stdout's last line stays the verdict).
-    let certificates = display
-        .certificates
-        .as_ref()
-        .map_or(Ok(()), |w| w.summary().map(|l| progress::stderr_line(&l)));
+    let certificates = display.certificates.as_ref().map_or(Ok(()), |w| {
+        w.summary()
+            .map(|l| progress::stderr_line(&l))
+            .map_err(crate::output::cli_error)
+    });
     let report = match report {
         Ok(r) => r,
         Err(e @ EngineError::Figures(_)) => return Err(InputError(e.to_string()).into()),

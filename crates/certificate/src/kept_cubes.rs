@@ -17,7 +17,7 @@ use std::sync::{Arc, Mutex};
 
 use dissect_exact::{CubeProof, CubeProofWriters};
 
-use crate::output::write_atomic;
+use crate::{write_atomic, CertificateError};
 
 /// The work folder of K in `dir`.
 pub fn work(dir: &Path, k: usize) -> PathBuf {
@@ -52,19 +52,20 @@ pub struct CubeFiles {
 }
 
 impl CubeFiles {
-    fn noted(&self, r: anyhow::Result<()>) {
+    fn noted(&self, r: Result<(), CertificateError>) {
         if let Err(e) = r {
-            note(&self.error, format!("{e:#}"));
+            note(&self.error, e.to_string());
         }
     }
 
     /// Starts the work folder of K afresh with `base` and `cover`.
-    fn start(&self, k: usize, base: &str, cover: &[i32]) -> anyhow::Result<()> {
+    fn start(&self, k: usize, base: &str, cover: &[i32]) -> Result<(), CertificateError> {
         let work = work(&self.dir, k);
+        let cannot = |e| CertificateError::io(format!("cannot make {}", work.display()), e);
         if work.exists() {
-            std::fs::remove_dir_all(&work)?;
+            std::fs::remove_dir_all(&work).map_err(cannot)?;
         }
-        std::fs::create_dir_all(&work)?;
+        std::fs::create_dir_all(&work).map_err(cannot)?;
         write_atomic(&work.join("base.cnf"), base)?;
         write_atomic(&work.join("cover"), cover_text(cover))
     }
@@ -134,11 +135,16 @@ impl CubeProofWriters for CubeFiles {
 
     fn refuted(&self, pieces: usize, cube: usize, p: &CubeProof) {
         let work = work(&self.dir, pieces);
-        let keep = || -> anyhow::Result<()> {
+        let keep = || -> Result<(), CertificateError> {
             write_atomic(&work.join(format!("cube{cube}.cnf")), &p.formula)?;
             match &p.proof {
                 Some(text) => write_atomic(&proof(&work, cube), text)?,
-                None => std::fs::rename(part(&work, cube), proof(&work, cube))?,
+                None => std::fs::rename(part(&work, cube), proof(&work, cube)).map_err(|e| {
+                    CertificateError::io(
+                        format!("cannot write {}", proof(&work, cube).display()),
+                        e,
+                    )
+                })?,
             }
             let fields = format!(
                 "{} {} {} {} {} {}\n",
