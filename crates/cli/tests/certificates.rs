@@ -33,11 +33,10 @@ fn setup() -> tempfile::TempDir {
     dir
 }
 
-#[test]
-fn bound_writes_certificates_that_check_proof_verifies() {
-    let dir = setup();
-    let out = dissect(
-        dir.path(),
+/// `bound -q --max-pieces 2 --certificate cert a.txt b.txt` in `dir`.
+fn certify_k2(dir: &Path) -> Output {
+    dissect(
+        dir,
         &[
             "bound",
             "-q",
@@ -48,7 +47,13 @@ fn bound_writes_certificates_that_check_proof_verifies() {
             "a.txt",
             "b.txt",
         ],
-    );
+    )
+}
+
+#[test]
+fn bound_writes_certificates_that_check_proof_verifies() {
+    let dir = setup();
+    let out = certify_k2(dir.path());
     assert!(out.status.success(), "{}", text(&out));
     assert!(
         text(&out).contains("certificates: k1, k2 in cert"),
@@ -89,19 +94,7 @@ fn bound_writes_certificates_that_check_proof_verifies() {
 #[test]
 fn check_proof_reads_a_proof_from_a_named_pipe() {
     let dir = setup();
-    let out = dissect(
-        dir.path(),
-        &[
-            "bound",
-            "-q",
-            "--max-pieces",
-            "2",
-            "--certificate",
-            "cert",
-            "a.txt",
-            "b.txt",
-        ],
-    );
+    let out = certify_k2(dir.path());
     assert!(out.status.success(), "{}", text(&out));
     let cert = dir.path().join("cert");
     let piped = dir.path().join("piped");
