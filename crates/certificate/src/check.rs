@@ -141,11 +141,7 @@ fn certificates(dir: &Path) -> Result<Vec<(usize, PathBuf, PathBuf)>> {
         let entry =
             entry.map_err(|e| input(format!("{}: cannot read the folder: {e}", dir.display())))?;
         let name = entry.file_name().to_string_lossy().into_owned();
-        let Some(k) = name
-            .strip_prefix('k')
-            .and_then(|r| r.strip_suffix(".cnf"))
-            .and_then(|k| k.parse::<usize>().ok())
-        else {
+        let Some(k) = crate::k_of(&name, ".cnf") else {
             continue;
         };
         let cover = dir.join(format!("k{k}.cubes"));

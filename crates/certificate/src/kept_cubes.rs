@@ -170,11 +170,7 @@ pub fn tidy(dir: &Path) -> Vec<(usize, usize)> {
     };
     for entry in entries.flatten() {
         let name = entry.file_name().to_string_lossy().into_owned();
-        let Some(k) = name
-            .strip_prefix('k')
-            .and_then(|r| r.strip_suffix(".work"))
-            .and_then(|k| k.parse::<usize>().ok())
-        else {
+        let Some(k) = crate::k_of(&name, ".work") else {
             continue;
         };
         let mut metas = 0;

@@ -61,6 +61,12 @@ impl CertificateError {
     }
 }
 
+/// The K of a certificate folder's file name `k{K}{suffix}` (`k4.cnf`,
+/// `k4.work`), or `None` for any other name.
+fn k_of(name: &str, suffix: &str) -> Option<usize> {
+    name.strip_prefix('k')?.strip_suffix(suffix)?.parse().ok()
+}
+
 /// Writes `bytes` to `path` whole or not at all: the bytes go to a
 /// temporary file in the same folder, flushed to disk, then renamed over
 /// `path`. A kill or a full disk during the write leaves the old file (or
