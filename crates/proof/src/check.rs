@@ -43,17 +43,19 @@ fn codes(clause: &[i32]) -> Vec<u32> {
 /// The clauses present and their top-level unit propagation.
 ///
 /// # Validity
-/// Clause `c` is `arena[start[c]..start[c] + size[c]]`; a clause of two or
-/// more literals is watched by its first two, in `watches` of each with the
-/// other as its blocker; at the top level (between steps) every watch is
-/// true or unassigned unless the other watch is true.
+/// Every clause added is a header (its size, with [`DEAD`] once deleted)
+/// followed by its literals in `arena`, and is named by the offset of its
+/// first literal. A clause of two or more literals is watched by its first
+/// two, in `watches` of each with the other as its blocker (a binary
+/// clause's watch is marked [`BINARY`]: its blocker is the rest of the
+/// clause, so propagation reads the arena only for its header); at the top
+/// level (between steps) every watch is true or unassigned unless the other
+/// watch is true.
 struct Db {
     arena: Vec<u32>,
-    start: Vec<usize>,
-    size: Vec<u32>,
-    alive: Vec<bool>,
     /// `watches[l]`: (clause, blocker) of the clauses watching literal `l`
-    /// (visited when `l` turns false).
+    /// (visited when `l` turns false); the clause carries [`BINARY`] when
+    /// it has two literals.
     watches: Vec<Vec<(u32, u32)>>,
     /// Per literal: 0 unassigned, 1 true, -1 false.
     value: Vec<i8>,
@@ -61,29 +63,37 @@ struct Db {
     reason: Vec<Option<u32>>,
     trail: Vec<u32>,
     head: usize,
-    /// Clause ids by sorted literals, for deletions (built at the first).
-    index: Option<std::collections::HashMap<Vec<u32>, Vec<u32>>>,
+    /// Clauses by sorted literals, for deletions (built at the first).
+    index: Option<Index>,
+    /// The unit clauses added (deleted ones too), for [`Db::rebuild`].
+    units: Vec<u32>,
     /// A deleted clause was a top-level reason: propagate again from scratch.
     dirty: bool,
-    /// Literals of deleted clauses still in `arena`.
+    /// Words of deleted clauses still in `arena`.
     dead: usize,
     /// Compact once `dead` is past this and half the arena.
     compact_at: usize,
 }
 
+/// Clauses by their sorted literals.
+type Index = rustc_hash::FxHashMap<Vec<u32>, Vec<u32>>;
+
+/// The mark of a binary clause in its watches.
+const BINARY: u32 = 1 << 31;
+/// The mark of a deleted clause in its header.
+const DEAD: u32 = 1 << 31;
+
 impl Db {
     fn new(vars: usize) -> Db {
         Db {
             arena: Vec::new(),
-            start: Vec::new(),
-            size: Vec::new(),
-            alive: Vec::new(),
             watches: vec![Vec::new(); 2 * vars],
             value: vec![0; 2 * vars],
             reason: vec![None; vars],
             trail: Vec::new(),
             head: 0,
             index: None,
+            units: Vec::new(),
             dirty: false,
             dead: 0,
             compact_at: 1 << 22,
@@ -103,7 +113,7 @@ impl Db {
         let mut db = Db::new(self.reason.len());
         db.compact_at = self.compact_at;
         let mut conflict = false;
-        for c in (0..self.start.len()).filter(|&c| self.alive[c]) {
+        for c in self.clauses().filter(|&c| self.is_alive(c)) {
             let clause: Vec<i32> = self
                 .lits(c)
                 .iter()
@@ -134,8 +144,28 @@ impl Db {
         }
     }
 
+    /// Every clause added (deleted ones too), in order.
+    fn clauses(&self) -> impl Iterator<Item = usize> + '_ {
+        let mut header = 0;
+        std::iter::from_fn(move || {
+            let c = header + 1;
+            (c <= self.arena.len()).then(|| {
+                header = c + self.size(c);
+                c
+            })
+        })
+    }
+
+    fn size(&self, c: usize) -> usize {
+        (self.arena[c - 1] & !DEAD) as usize
+    }
+
+    fn is_alive(&self, c: usize) -> bool {
+        self.arena[c - 1] & DEAD == 0
+    }
+
     fn lits(&self, c: usize) -> &[u32] {
-        &self.arena[self.start[c]..self.start[c] + self.size[c] as usize]
+        &self.arena[c..c + self.size(c)]
     }
 
     fn assign(&mut self, l: u32, reason: Option<u32>) {
@@ -166,43 +196,58 @@ impl Db {
             while i < list.len() {
                 let (c, blocker) = list[i];
                 i += 1;
-                if self.value[blocker as usize] == 1 {
+                let blocked = self.value[blocker as usize];
+                if blocked == 1 {
                     list[keep] = (c, blocker);
                     keep += 1;
                     continue;
                 }
-                let c = c as usize;
-                if !self.alive[c] {
+                let s = (c & !BINARY) as usize;
+                let header = self.arena[s - 1];
+                if header & DEAD != 0 {
                     continue;
                 }
-                let (s, n) = (self.start[c], self.size[c] as usize);
+                if c & BINARY != 0 {
+                    list[keep] = (c, blocker);
+                    keep += 1;
+                    if blocked == -1 {
+                        conflict = true;
+                        break;
+                    }
+                    self.assign(blocker, Some(s as u32));
+                    continue;
+                }
                 if self.arena[s] == falsified {
                     self.arena.swap(s, s + 1);
                 }
                 let other = self.arena[s];
                 if self.value[other as usize] == 1 {
-                    list[keep] = (c as u32, other);
+                    list[keep] = (c, other);
                     keep += 1;
                     continue;
                 }
-                let free = (s + 2..s + n).find(|&k| self.value[self.arena[k] as usize] != -1);
+                let end = s + header as usize;
+                let free = (s + 2..end).find(|&k| self.value[self.arena[k] as usize] != -1);
                 if let Some(k) = free {
                     self.arena.swap(s + 1, k);
                     let w = self.arena[s + 1];
-                    self.watches[w as usize].push((c as u32, other));
+                    self.watches[w as usize].push((c, other));
                     continue;
                 }
-                list[keep] = (c as u32, other);
+                list[keep] = (c, other);
                 keep += 1;
                 if self.value[other as usize] == -1 {
                     conflict = true;
-                    while i < list.len() {
-                        list[keep] = list[i];
-                        keep += 1;
-                        i += 1;
-                    }
-                } else {
-                    self.assign(other, Some(c as u32));
+                    break;
+                }
+                self.assign(other, Some(c));
+            }
+            if conflict {
+                // Keep the watches not visited.
+                while i < list.len() {
+                    list[keep] = list[i];
+                    keep += 1;
+                    i += 1;
                 }
             }
             list.truncate(keep);
@@ -218,7 +263,12 @@ impl Db {
     /// when the clauses present now propagate to a conflict.
     fn add(&mut self, clause: &[i32]) -> bool {
         let mut lits = codes(clause);
-        let id = self.start.len() as u32;
+        let c = self.arena.len() + 1;
+        assert!(
+            c + lits.len() < BINARY as usize,
+            "over 2^31 literals present"
+        );
+        let id = c as u32;
         if let Some(index) = &mut self.index {
             index.entry(lits.clone()).or_default().push(id);
         }
@@ -229,20 +279,19 @@ impl Db {
             0 => 1,
             _ => 2,
         });
-        self.start.push(self.arena.len());
-        self.size.push(lits.len() as u32);
+        self.arena.push(lits.len() as u32);
         self.arena.extend_from_slice(&lits);
-        self.alive.push(true);
         if tautology {
             return false;
         }
         match lits.len() {
             0 => return true,
-            1 => {}
+            1 => self.units.push(id),
             _ => {
                 let (a, b) = (lits[0], lits[1]);
-                self.watches[a as usize].push((id, b));
-                self.watches[b as usize].push((id, a));
+                let mark = if lits.len() == 2 { id | BINARY } else { id };
+                self.watches[a as usize].push((mark, b));
+                self.watches[b as usize].push((mark, a));
             }
         }
         let first = lits[0];
@@ -260,14 +309,11 @@ impl Db {
     /// Deletes a clause with these literals; `false` when none is present.
     fn delete(&mut self, clause: &[i32]) -> bool {
         if self.index.is_none() {
-            let mut index: std::collections::HashMap<Vec<u32>, Vec<u32>> =
-                std::collections::HashMap::new();
-            for c in 0..self.start.len() {
-                if self.alive[c] {
-                    let mut key = self.lits(c).to_vec();
-                    key.sort_unstable();
-                    index.entry(key).or_default().push(c as u32);
-                }
+            let mut index = Index::default();
+            for c in self.clauses().filter(|&c| self.is_alive(c)) {
+                let mut key = self.lits(c).to_vec();
+                key.sort_unstable();
+                index.entry(key).or_default().push(c as u32);
             }
             self.index = Some(index);
         }
@@ -277,15 +323,20 @@ impl Db {
             .as_mut()
             .and_then(|index| index.get_mut(&lits))
             .and_then(Vec::pop);
-        let Some(id) = found else {
+        let Some(c) = found else {
             return false;
         };
-        self.alive[id as usize] = false;
-        self.dead += self.size[id as usize] as usize;
-        if let Some(&first) = self.lits(id as usize).first() {
-            if self.reason[(first >> 1) as usize] == Some(id) {
-                self.dirty = true;
-            }
+        let c = c as usize;
+        self.arena[c - 1] |= DEAD;
+        self.dead += 1 + self.size(c);
+        // The literal a clause implied is its first, or either of a
+        // binary clause's (their watches never reorder them).
+        let implied = self.lits(c).iter().take(2);
+        if implied
+            .into_iter()
+            .any(|&l| self.reason[(l >> 1) as usize] == Some(c as u32))
+        {
+            self.dirty = true;
         }
         true
     }
@@ -296,14 +347,15 @@ impl Db {
         self.dirty = false;
         self.undo(0);
         self.head = 0;
-        for id in 0..self.start.len() {
-            if self.alive[id] && self.size[id] == 1 {
-                let l = self.arena[self.start[id]];
-                match self.value[l as usize] {
-                    -1 => return true,
-                    0 => self.assign(l, Some(id as u32)),
-                    _ => {}
-                }
+        self.units
+            .retain(|&c| self.arena[c as usize - 1] & DEAD == 0);
+        for k in 0..self.units.len() {
+            let c = self.units[k];
+            let l = self.arena[c as usize];
+            match self.value[l as usize] {
+                -1 => return true,
+                0 => self.assign(l, Some(c)),
+                _ => {}
             }
         }
         self.propagate()
@@ -334,12 +386,13 @@ impl Db {
         let Some(&pivot) = lemma.first() else {
             return false;
         };
-        for id in 0..self.start.len() {
-            if !self.alive[id] || !self.lits(id).contains(&(pivot ^ 1)) {
-                continue;
-            }
+        let holders: Vec<usize> = self
+            .clauses()
+            .filter(|&c| self.is_alive(c) && self.lits(c).contains(&(pivot ^ 1)))
+            .collect();
+        for c in holders {
             let mut resolvent: Vec<u32> = lemma.to_vec();
-            resolvent.extend(self.lits(id).iter().copied().filter(|&l| l != pivot ^ 1));
+            resolvent.extend(self.lits(c).iter().copied().filter(|&l| l != pivot ^ 1));
             resolvent.sort_unstable();
             resolvent.dedup();
             if resolvent.windows(2).any(|w| w[0] ^ 1 == w[1]) {

@@ -120,6 +120,12 @@ fn deletions_are_honoured_and_deleted_units_propagate_no_more() {
     let f = cnf("p cnf 3 4\n1 2 0\n1 -2 0\n-1 3 0\n-1 -3 2 0\n");
     let e = check(&f, &proof("1 0\nd 1 0\n-2 0\n0\n")).unwrap_err();
     assert!(matches!(e, ProofError::NotImplied { line: 3, .. }), "{e}");
+    // A binary clause that implied its second literal, deleted: that
+    // literal is free again, so its negation (a RAT: no clause present
+    // holds the literal) refutes nothing, and the empty clause fails.
+    let f = cnf("p cnf 2 2\n-1 2 0\n1 0\n");
+    let e = check(&f, &proof("d -1 2 0\n-2 0\n0\n")).unwrap_err();
+    assert!(matches!(e, ProofError::NotImplied { line: 3, .. }), "{e}");
     // Deleting a clause that is not there is ignored and counted.
     let v = check(&cnf(FOUR), &proof("d 1 2 3 0\n1 0\n0\n")).expect("verified");
     assert_eq!(v.missing_deletions, 1);
