@@ -112,9 +112,10 @@ pub fn check_folder(
         } else {
             let cnf =
                 Cnf::parse(&read(&cnf_path)?).map_err(|e| located(e, &cnf_path, &proof_path))?;
-            match check_streamed(&cnf, &cnf_path, &proof_path, stop)? {
+            let clauses = cnf.clauses().len();
+            match check_streamed(cnf, &cnf_path, &proof_path, stop)? {
                 Ok(v) => Outcome::Verified(Summary {
-                    clauses: cnf.clauses().len(),
+                    clauses,
                     cubes: 0,
                     lemmas: v.lemmas,
                     rat_lemmas: v.rat_lemmas,
@@ -187,7 +188,7 @@ fn cannot_read(path: &Path, e: std::io::Error) -> CertificateError {
 /// (bad input, the whole file parsed as before); `Ok(Err)`: the proof
 /// fails.
 fn check_streamed(
-    cnf: &Cnf,
+    cnf: Cnf,
     cnf_path: &Path,
     proof: &Path,
     stop: &AtomicBool,
@@ -195,7 +196,10 @@ fn check_streamed(
     use std::io::BufRead;
     let file = std::fs::File::open(proof).map_err(|e| cannot_read(proof, e))?;
     let mut reader = std::io::BufReader::with_capacity(1 << 20, file);
-    let mut checker = dissect_proof::Checker::new(cnf);
+    let mut checker = dissect_proof::Checker::new(&cnf);
+    // The checker holds the clauses now: the parsed copy goes (on a
+    // formula of millions of clauses, hundreds of MB).
+    drop(cnf);
     let mut stream = dissect_proof::ProofStream::new();
     let (mut done, mut failed) = (false, None);
     let mut buf = Vec::new();
@@ -267,7 +271,7 @@ fn check_cubed(k: usize, cnf_path: &Path, cover_path: &Path, stop: &AtomicBool) 
         let (c, p) = files(j);
         let cnf = Cnf::parse(&read(&c)?).map_err(|e| located(e, &c, &p))?;
         let checked = match dissect_proof::cube_formula(&base, literal, &cnf) {
-            Ok(whole) => check_streamed(&whole, &c, &p, stop)?,
+            Ok(whole) => check_streamed(whole, &c, &p, stop)?,
             Err(e) => Err(e),
         };
         match checked {
