@@ -615,20 +615,42 @@ fn votes_of(
         }
         return vec![(best.0, s, translation(best.1))];
     }
-    let mut ranked: Vec<(std::cmp::Reverse<u32>, usize)> = votes
-        .iter()
-        .enumerate()
-        .filter(|(_, &v)| v > 0)
-        .map(|(idx, &v)| (std::cmp::Reverse(v), idx))
-        .collect();
-    if ranked.len() > take {
-        ranked.select_nth_unstable(take - 1);
-        ranked.truncate(take);
+    top_votes(&votes, take)
+        .into_iter()
+        .map(|(v, idx)| (v, s, translation(idx)))
+        .collect()
+}
+
+/// The `take` entries of `votes` with the most votes (none with 0), most
+/// first, the smaller index first on ties: one pass that keeps the best
+/// `take` so far in a heap whose top is the worst of them.
+pub(crate) fn top_votes(votes: &[u32], take: usize) -> Vec<(u32, usize)> {
+    use std::cmp::Reverse;
+    use std::collections::BinaryHeap;
+    if take == 0 {
+        return Vec::new();
     }
+    let mut heap: BinaryHeap<(Reverse<u32>, usize)> = BinaryHeap::with_capacity(take + 1);
+    // While the heap is full, an entry must beat its worst vote: indices
+    // only grow, so an equal vote loses the tie.
+    let mut floor = 0u32;
+    for (idx, &v) in votes.iter().enumerate() {
+        if v <= floor {
+            continue;
+        }
+        heap.push((Reverse(v), idx));
+        if heap.len() > take {
+            heap.pop();
+        }
+        if heap.len() == take {
+            floor = heap.peek().map_or(0, |(Reverse(w), _)| *w);
+        }
+    }
+    let mut ranked = heap.into_vec();
     ranked.sort_unstable();
     ranked
         .into_iter()
-        .map(|(v, idx)| (v.0, s, translation(idx)))
+        .map(|(Reverse(v), idx)| (v, idx))
         .collect()
 }
 

@@ -399,3 +399,33 @@ fn the_tail_rebuild_keeps_the_largest_pieces_and_stays_valid() {
         "the rebuilds never left the greedy's own dissection"
     );
 }
+
+/// The greedy's best translations by votes: the same as sorting every
+/// non-zero vote (most first, the smaller index on ties), on votes with
+/// many ties.
+#[test]
+fn top_votes_are_the_sorted_best() {
+    use crate::solver::greedy::top_votes;
+    use rand::{RngExt, SeedableRng};
+    let mut rng = rand::rngs::StdRng::seed_from_u64(7);
+    for round in 0..200 {
+        let n = rng.random_range(0..300);
+        let high = 1 + round % 6;
+        let votes: Vec<u32> = (0..n).map(|_| rng.random_range(0..=high)).collect();
+        let mut all: Vec<(u32, usize)> = votes
+            .iter()
+            .enumerate()
+            .filter(|(_, &v)| v > 0)
+            .map(|(i, &v)| (v, i))
+            .collect();
+        all.sort_by_key(|&(v, i)| (std::cmp::Reverse(v), i));
+        for take in [0, 1, 2, 8, 1000] {
+            let want: Vec<(u32, usize)> = all.iter().copied().take(take).collect();
+            assert_eq!(
+                top_votes(&votes, take),
+                want,
+                "votes {votes:?}, take {take}"
+            );
+        }
+    }
+}
