@@ -224,6 +224,8 @@ struct Run<'r, 'a> {
     inc: Incumbent,
     /// The width of the next pilot ([`Run::pilot`]).
     pilot_width: usize,
+    /// The fewest pieces any pilot found ([`Run::pilot`]).
+    pilot_best: usize,
     /// How the pilot's greedy chooses motions (set by
     /// [`Run::constructive`]).
     pilot_choice: greedy::Choice,
@@ -265,6 +267,7 @@ impl<'r, 'a> Run<'r, 'a> {
             below: usize::from(!anytime.plateau),
             inc: Incumbent::new(outcome, max_pieces),
             pilot_width: PILOT_WIDTH,
+            pilot_best: usize::MAX,
             pilot_choice: greedy::Choice::Connected,
             ties: Vec::new(),
             walk: None,
@@ -404,6 +407,7 @@ impl<'r, 'a> Run<'r, 'a> {
                     break 'styles;
                 };
                 truncated |= more;
+                self.pilot_best = self.pilot_best.min(cand.k);
                 improved |= self.offer_greedy(cand);
             }
         }
@@ -412,17 +416,24 @@ impl<'r, 'a> Run<'r, 'a> {
     }
 
     /// Pilots of growing width before the level search: up to
-    /// [`PILOT_EAGER_WIDTH`] whatever they find, then while each improves.
+    /// [`PILOT_EAGER_WIDTH`] whatever they find, then while each finds
+    /// fewer pieces than the narrower ones did. That test looks at the
+    /// pilots alone, which draw nothing at random, so how wide they get
+    /// here does not hang on what the rebuilds between them found (on
+    /// 7-14-17 a lucky rebuild used to end them before the width that
+    /// found the fewest pieces).
     fn pilots(&mut self) {
-        let mut improved = true;
+        let mut progress = true;
         while !self.search.stopped()
             && self.pilot_width <= PILOT_MAX_WIDTH
-            && (self.pilot_width <= PILOT_EAGER_WIDTH || improved)
+            && (self.pilot_width <= PILOT_EAGER_WIDTH || progress)
         {
             let width = self.pilot_width;
-            improved = self.pilot();
+            let before = self.pilot_best;
+            self.pilot();
+            progress = self.pilot_best < before;
             // Rebuilds in proportion to the pilot's work.
-            improved |= self.rebuild(width / PILOT_WIDTH);
+            self.rebuild(width / PILOT_WIDTH);
         }
     }
 
