@@ -525,9 +525,9 @@ fn candidate_votes(
 }
 
 /// The `take` translations carrying the most of `source` (every
-/// `stride`-th point) under symmetry `s` onto `free`: `(votes, s,
-/// translation)`, most votes first, the smallest translation in index
-/// order on ties.
+/// `stride`-th point) under symmetry `s` onto `free` ([`top_votes`]:
+/// fewer when fewer have a vote): `(votes, s, translation)`, most votes
+/// first, the smallest translation in index order on ties.
 fn votes_of(
     problem: &Problem,
     source: &[Point],
@@ -606,15 +606,6 @@ fn votes_of(
         }
         t
     };
-    if take == 1 {
-        let mut best = (0u32, 0usize);
-        for (idx, &v) in votes.iter().enumerate() {
-            if v > best.0 {
-                best = (v, idx);
-            }
-        }
-        return vec![(best.0, s, translation(best.1))];
-    }
     top_votes(&votes, take)
         .into_iter()
         .map(|(v, idx)| (v, s, translation(idx)))
