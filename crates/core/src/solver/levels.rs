@@ -204,7 +204,11 @@ pub(crate) fn piece_from_mismatches<R: rand::Rng>(
 /// One descent exploration: `parent` (a dissection, or any candidate) with
 /// one piece fewer, by merging a piece (the smallest one half of the time,
 /// else a random one) into a neighbouring piece in every figure, then
-/// refined and scored at `level` (pieces − 1).
+/// refined and scored at `level` (pieces − 1). A piece that touches no
+/// other piece in some figure (a whole component there, such as the 1³ of
+/// 1³+6³+8³) is never merged: the merged piece would be split in that
+/// figure, and those were the near misses the descent kept returning.
+/// When every piece is such a piece, any may be merged.
 pub(crate) fn merge<R: rand::Rng>(
     problem: &Problem,
     parent: &Candidate,
@@ -225,14 +229,29 @@ pub(crate) fn merge<R: rand::Rng>(
     for &l in labels {
         sizes[l as usize] += 1;
     }
-    let b = if rng.random_bool(0.5) {
-        let least = sizes.iter().copied().filter(|&s| s > 0).min().unwrap_or(0);
-        let smallest: Vec<usize> = (0..k).filter(|&i| sizes[i] == least).collect();
-        smallest[rng.random_range(0..smallest.len())]
+    let alone = isolated(problem, &cand);
+    let b = if !alone.iter().any(|&a| a) {
+        if rng.random_bool(0.5) {
+            let least = sizes.iter().copied().filter(|&s| s > 0).min().unwrap_or(0);
+            let smallest: Vec<usize> = (0..k).filter(|&i| sizes[i] == least).collect();
+            smallest[rng.random_range(0..smallest.len())]
+        } else {
+            rng.random_range(0..k)
+        }
     } else {
-        rng.random_range(0..k)
+        let free: Vec<usize> = (0..k).filter(|&i| !alone[i]).collect();
+        if free.is_empty() {
+            rng.random_range(0..k)
+        } else if rng.random_bool(0.5) {
+            let least = free.iter().map(|&i| sizes[i]).min().unwrap_or(0);
+            let smallest: Vec<usize> = free.into_iter().filter(|&i| sizes[i] == least).collect();
+            smallest[rng.random_range(0..smallest.len())]
+        } else {
+            free[rng.random_range(0..free.len())]
+        }
     };
-    // A neighbour of piece b, chosen in proportion to the shared boundary.
+    // A neighbour of piece b, chosen in proportion to the shared boundary
+    // (none that touches nothing in some figure, while b may be merged).
     let mut touching: Vec<u16> = Vec::new();
     for c in 0..shape.len() as u32 {
         if labels[c as usize] as usize != b {
@@ -240,7 +259,7 @@ pub(crate) fn merge<R: rand::Rng>(
         }
         for &n in shape.neighbors(c) {
             let l = labels[n as usize];
-            if l as usize != b {
+            if l as usize != b && (alone[b] || !alone[l as usize]) {
                 touching.push(l);
             }
         }
@@ -265,4 +284,22 @@ pub(crate) fn merge<R: rand::Rng>(
     }
     cand.k = k - 1;
     refine_and_score(problem, cand, level, options, rng, stop)
+}
+
+/// `isolated[i]`: whether piece `i` of `cand` touches no other piece in
+/// some figure (each of its parts there is a whole component).
+pub(crate) fn isolated(problem: &Problem, cand: &Candidate) -> Vec<bool> {
+    let mut touches = vec![vec![false; cand.k]; problem.shapes.len()];
+    for (f, (shape, labels)) in problem.shapes.iter().zip(&cand.labels).enumerate() {
+        for c in 0..shape.len() as u32 {
+            let l = labels[c as usize];
+            if touches[f][l as usize] {
+                continue;
+            }
+            if shape.neighbors(c).iter().any(|&n| labels[n as usize] != l) {
+                touches[f][l as usize] = true;
+            }
+        }
+    }
+    (0..cand.k).map(|i| touches.iter().any(|t| !t[i])).collect()
 }

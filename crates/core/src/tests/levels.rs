@@ -4,7 +4,7 @@
 use std::sync::atomic::AtomicBool;
 
 use crate::lattice::LatticeKind;
-use crate::solver::levels::{grow, lambda, level_one};
+use crate::solver::levels::{grow, isolated, lambda, level_one, merge};
 use crate::solver::Options;
 
 use super::util::{candidate, rng, verified, Cubic, Square, Tri4};
@@ -131,4 +131,43 @@ fn objective() {
     assert!(!s.valid);
     assert_eq!((s.mismatch, s.split), (0, 2));
     assert_eq!(s.value, 2000.0);
+}
+
+/// Piece A is a whole component of the first figure (a lone cell): it
+/// touches no other piece there, so it is isolated; B and C touch in
+/// both figures.
+const LONE: [&str; 2] = ["A.BBC|..BBC", "BBA|BBC|..C"];
+
+#[test]
+fn isolated_pieces_are_whole_components_somewhere() {
+    let (_, problem, cand) = candidate(Square, true, &LONE);
+    assert_eq!(isolated(&problem, &cand), vec![true, false, false]);
+    // Every piece touches another in the second figure alone: none is.
+    let (_, problem, cand) = candidate(Square, true, &["AB|CC", "AB|CC"]);
+    assert_eq!(isolated(&problem, &cand), vec![false, false, false]);
+}
+
+/// The descent's merge never merges a piece that is a whole component of
+/// a figure (the result would be split there): the lone cell keeps a
+/// label of its own in every exploration.
+#[test]
+fn merge_keeps_whole_components_apart() {
+    let (figures, problem, cand) = candidate(Square, true, &LONE);
+    let no_refining = Options {
+        iterations: 0,
+        ..small()
+    };
+    let lone = figures[0]
+        .cells()
+        .iter()
+        .position(|c| *c == [0, 0, 0])
+        .expect("the lone cell");
+    for seed in 0..40 {
+        let stop = AtomicBool::new(false);
+        let (merged, _) = merge(&problem, &cand, 1, &no_refining, &mut rng(seed), &stop);
+        assert_eq!(merged.k, 2);
+        let labels = &merged.labels[0];
+        let shared = labels.iter().filter(|&&l| l == labels[lone]).count();
+        assert_eq!(shared, 1, "seed {seed}: {labels:?}");
+    }
 }
