@@ -229,26 +229,24 @@ pub(crate) fn merge<R: rand::Rng>(
     for &l in labels {
         sizes[l as usize] += 1;
     }
+    // The pieces that may be merged: all of them when every one is
+    // isolated (with none isolated, the draws are those of `0..k`).
     let alone = isolated(problem, &cand);
-    let b = if !alone.iter().any(|&a| a) {
-        if rng.random_bool(0.5) {
-            let least = sizes.iter().copied().filter(|&s| s > 0).min().unwrap_or(0);
-            let smallest: Vec<usize> = (0..k).filter(|&i| sizes[i] == least).collect();
-            smallest[rng.random_range(0..smallest.len())]
-        } else {
-            rng.random_range(0..k)
-        }
+    let mut free: Vec<usize> = (0..k).filter(|&i| !alone[i]).collect();
+    if free.is_empty() {
+        free = (0..k).collect();
+    }
+    let b = if rng.random_bool(0.5) {
+        let least = free
+            .iter()
+            .map(|&i| sizes[i])
+            .filter(|&s| s > 0)
+            .min()
+            .unwrap_or(0);
+        let smallest: Vec<usize> = free.into_iter().filter(|&i| sizes[i] == least).collect();
+        smallest[rng.random_range(0..smallest.len())]
     } else {
-        let free: Vec<usize> = (0..k).filter(|&i| !alone[i]).collect();
-        if free.is_empty() {
-            rng.random_range(0..k)
-        } else if rng.random_bool(0.5) {
-            let least = free.iter().map(|&i| sizes[i]).min().unwrap_or(0);
-            let smallest: Vec<usize> = free.into_iter().filter(|&i| sizes[i] == least).collect();
-            smallest[rng.random_range(0..smallest.len())]
-        } else {
-            free[rng.random_range(0..free.len())]
-        }
+        free[rng.random_range(0..free.len())]
     };
     // A neighbour of piece b, chosen in proportion to the shared boundary
     // (none that touches nothing in some figure, while b may be merged).

@@ -142,7 +142,7 @@ const LONE: [&str; 2] = ["A.BBC|..BBC", "BBA|BBC|..C"];
 fn isolated_pieces_are_whole_components_somewhere() {
     let (_, problem, cand) = candidate(Square, true, &LONE);
     assert_eq!(isolated(&problem, &cand), vec![true, false, false]);
-    // Every piece touches another in the second figure alone: none is.
+    // Every piece touches another in both figures: none is isolated.
     let (_, problem, cand) = candidate(Square, true, &["AB|CC", "AB|CC"]);
     assert_eq!(isolated(&problem, &cand), vec![false, false, false]);
 }
