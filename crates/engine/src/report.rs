@@ -25,6 +25,8 @@ pub enum Source {
     Regroup,
     /// The tail of the best dissection cut again by a randomized greedy.
     Rebuild,
+    /// Figures of a few boxes cut into boxes by guillotine cuts.
+    Boxes,
     /// The interlocking search (`--min-level`, `--assemblable`): touching
     /// pieces of a refused dissection cut again until it holds together.
     Interlock,
@@ -43,6 +45,7 @@ impl Source {
             Source::Sectors => "sectors",
             Source::Regroup => "regroup",
             Source::Rebuild => "rebuild",
+            Source::Boxes => "boxes",
             Source::Interlock => "interlock",
         }
     }

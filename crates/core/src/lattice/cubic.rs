@@ -36,6 +36,9 @@ impl Lattice for Cubic {
             [x, y, z - 1],
         ]
     }
+    fn is_grid(&self) -> bool {
+        true
+    }
     fn supports_mirror(&self) -> bool {
         false
     }

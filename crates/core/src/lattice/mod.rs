@@ -440,6 +440,14 @@ pub trait Lattice: Send + Sync {
     /// The allowed point symmetries; the identity comes first.
     fn symmetries(&self, mirror: bool) -> Vec<Symmetry>;
 
+    /// Whether the cells are exactly the integer points (a cell is its own
+    /// point, translations are by any integer) and every symmetry is a
+    /// signed permutation of the axes, so that a box of cells is a box of
+    /// points and a symmetry maps it onto a box (`square` and `cubic`).
+    fn is_grid(&self) -> bool {
+        false
+    }
+
     /// Every cell whose block `[x, y, z]` lies in the box `lo..=hi`
     /// (for 2D lattices the third coordinate of the box is ignored). The
     /// default is a 2D lattice with one cell `[x, y, 0]` per block

@@ -28,6 +28,9 @@ impl Lattice for Square {
     fn neighbors(&self, [x, y, _]: Cell) -> Vec<Cell> {
         vec![[x + 1, y, 0], [x - 1, y, 0], [x, y + 1, 0], [x, y - 1, 0]]
     }
+    fn is_grid(&self) -> bool {
+        true
+    }
     fn supports_mirror(&self) -> bool {
         true
     }

@@ -12,7 +12,7 @@ use crate::solver::explore::Executor;
 use crate::solver::incumbent::Incumbent;
 use crate::solver::plateau::{plateau_descents, plateau_walk};
 use crate::solver::search::{From, Level, Search};
-use crate::solver::{coarse, greedy, regroup, sectors};
+use crate::solver::{coarse, greedy, guillotine, regroup, sectors};
 use crate::solver::{Event, Observer, Options, Outcome, Repair, SolveError, Via};
 
 /// Levels climbed at full resolution from a lifted coarse candidate.
@@ -123,6 +123,10 @@ pub fn solve_anytime_with(
     }
     let mut run = Run::new(&search, anytime, repair, s0.mismatch);
     run.constructive();
+    // Figures of a few boxes (sums of cubes): boxes and bent slabs.
+    if !search.stopped() {
+        run.boxes();
+    }
     // Large figures: the level search is slow there, so the constructive
     // step looks ahead (the pilot method).
     let cells = figures[0].len();
@@ -474,6 +478,29 @@ impl<'r, 'a> Run<'r, 'a> {
                     self.inc.improve(search, c, s, level, 0, Via::Sectors);
                 }
             }
+        }
+    }
+    /// Guillotine cuts ([`guillotine`]) on two figures that are each a
+    /// union of a few boxes, on a grid lattice; an improvement when it has
+    /// fewer pieces.
+    fn boxes(&mut self) {
+        let search = self.search;
+        let figures = search.figures;
+        if figures.len() != 2 || !figures[0].lattice().lattice().is_grid() {
+            return;
+        }
+        let cells = [figures[0].cells(), figures[1].cells()];
+        let Some(pieces) =
+            search.install(|| guillotine::dissect(cells, &search.problem.geo.syms, search.stop))
+        else {
+            return;
+        };
+        if pieces[0].len() > self.max_pieces {
+            return;
+        }
+        if let Some((c, s)) = search.candidate_of(&pieces) {
+            let level = c.k - 1;
+            self.inc.improve(search, c, s, level, 0, Via::Boxes);
         }
     }
     /// Regrouping ([`regroup`]): groups of touching pieces of the best

@@ -19,6 +19,7 @@ pub(crate) mod distance;
 mod explore;
 pub(crate) mod flood_fill;
 pub(crate) mod greedy;
+pub(crate) mod guillotine;
 mod incumbent;
 pub(crate) mod levels;
 mod lookahead;
@@ -140,11 +141,13 @@ pub enum Via {
     /// The tail of a dissection cut again by a randomized greedy, its
     /// largest pieces kept.
     Rebuild,
+    /// Figures of a few boxes cut into boxes by guillotine cuts.
+    Boxes,
 }
 
 impl Via {
     /// A short name: `greedy`, `search`, `repair`, `coarse`, `sectors`,
-    /// `regroup`, `rebuild`.
+    /// `regroup`, `rebuild`, `boxes`.
     pub fn name(self) -> &'static str {
         match self {
             Via::Greedy => "greedy",
@@ -154,6 +157,7 @@ impl Via {
             Via::Sectors => "sectors",
             Via::Regroup => "regroup",
             Via::Rebuild => "rebuild",
+            Via::Boxes => "boxes",
         }
     }
 }

@@ -6,6 +6,7 @@ mod anytime;
 mod coarse;
 mod distance;
 mod flood_fill;
+mod guillotine;
 mod levels;
 mod matching;
 mod multi_figure;

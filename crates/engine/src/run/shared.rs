@@ -282,6 +282,7 @@ impl Observer for Shared<'_> {
                     Via::Sectors => Source::Sectors,
                     Via::Regroup => Source::Regroup,
                     Via::Rebuild => Source::Rebuild,
+                    Via::Boxes => Source::Boxes,
                     _ => Source::Search,
                 },
             ),

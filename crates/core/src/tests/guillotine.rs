@@ -1,0 +1,90 @@
+//! Guillotine cuts: figures of a few boxes cut into boxes and bent slabs.
+
+use std::sync::atomic::AtomicBool;
+
+use crate::figure::Figure;
+use crate::lattice::{Cell, LatticeKind};
+use crate::solver::guillotine::dissect;
+use crate::tests::util::{geometry, labelled};
+use crate::verify::verify_pieces;
+
+/// Cubes of these sides side by side on one floor, one column apart, and
+/// the cube of side `whole`.
+fn cubes(sides: &[i32], whole: i32) -> [Figure; 2] {
+    let mut a: Vec<Cell> = Vec::new();
+    let mut x0 = 0;
+    for &s in sides {
+        for z in 0..s {
+            for y in 0..s {
+                for x in 0..s {
+                    a.push([x0 + x, y, z]);
+                }
+            }
+        }
+        x0 += s + 1;
+    }
+    let b =
+        (0..whole).flat_map(|z| (0..whole).flat_map(move |y| (0..whole).map(move |x| [x, y, z])));
+    [
+        Figure::new(LatticeKind::Cubic, a).expect("cells"),
+        Figure::new(LatticeKind::Cubic, b).expect("cells"),
+    ]
+}
+
+/// Dissects two figures, checks the answer with the verifier and returns
+/// its pieces.
+fn solved(lattice: LatticeKind, mirror: bool, figs: &[Figure; 2]) -> Option<usize> {
+    let syms = geometry(lattice, mirror).syms;
+    let stop = AtomicBool::new(false);
+    let pieces = dissect([figs[0].cells(), figs[1].cells()], &syms, &stop)?;
+    verify_pieces(lattice, mirror, figs, &pieces).expect("a valid dissection");
+    Some(pieces[0].len())
+}
+
+/// 1³ + 6³ + 8³ = 9³: the 8³ whole, the 6³ cut into slabs bent round the
+/// shell it leaves: 10 pieces (the lower bound is 8), whichever figure
+/// comes first.
+#[test]
+fn sums_of_cubes_get_bent_slabs() {
+    let [a, b] = cubes(&[1, 6, 8], 9);
+    assert_eq!(
+        solved(LatticeKind::Cubic, false, &[a.clone(), b.clone()]),
+        Some(10)
+    );
+    assert_eq!(solved(LatticeKind::Cubic, false, &[b, a]), Some(10));
+}
+
+/// The square lattice too: 3² + 4² = 5², the squares apart.
+#[test]
+fn squares_apart_are_cut_into_rectangles() {
+    let (a, _) = labelled(LatticeKind::Square, "AAA.AAAA|AAA.AAAA|AAA.AAAA|....AAAA");
+    let (b, _) = labelled(LatticeKind::Square, "AAAAA|AAAAA|AAAAA|AAAAA|AAAAA");
+    let k = solved(LatticeKind::Square, true, &[a, b]).expect("two rectangles each");
+    assert!((4..=6).contains(&k), "{k} pieces");
+}
+
+/// A figure that needs many boxes (a staircase) is not searched.
+#[test]
+fn figures_of_many_boxes_are_left_alone() {
+    let stairs: Vec<String> = (1..=30).map(|w| "A".repeat(w)).collect();
+    let (a, _) = labelled(LatticeKind::Square, &stairs.join("|"));
+    let n = a.len();
+    let (b, _) = labelled(LatticeKind::Square, &vec!["A".repeat(n / 15); 15].join("|"));
+    assert_eq!(a.len(), b.len());
+    assert_eq!(solved(LatticeKind::Square, true, &[a, b]), None);
+}
+
+/// Only the square and cubic lattices are grids of boxes.
+#[test]
+fn only_square_and_cubic_are_grids() {
+    use LatticeKind::*;
+    for (kind, grid) in [
+        (Square, true),
+        (Cubic, true),
+        (Tri4, false),
+        (Tri3, false),
+        (Hex, false),
+    ] {
+        assert_eq!(kind.lattice().is_grid(), grid, "{kind}");
+    }
+}
