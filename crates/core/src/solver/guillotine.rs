@@ -250,15 +250,55 @@ fn corners(size: [i32; 3], piece: [i32; 3]) -> impl Iterator<Item = usize> {
 }
 
 /// One step from a state: the child's boxes and the piece laid.
+/// The boxes are not kept, only what makes them from the parent's (the
+/// children of a step are many, and this keeps them small).
 struct Child {
     parent: usize,
-    src: Vec<Cuboid>,
-    dst: Vec<Cuboid>,
+    /// The source box cut and what is left of it.
+    si: usize,
+    src_rest: Rest,
+    /// The target box filled and what is left of it.
+    ti: usize,
+    dst_rest: Rest,
     piece: Cuboid,
     motion: Motion,
     /// The groups of touching boxes with the same motion it joins.
     joins: Vec<usize>,
     score: usize,
+}
+
+/// What is left of a box: at most three boxes, kept inline.
+#[derive(Clone, Copy)]
+struct Rest {
+    boxes: [Cuboid; 3],
+    len: usize,
+}
+
+impl Rest {
+    fn of(boxes: &[Cuboid]) -> Rest {
+        let mut r = Rest {
+            boxes: [Cuboid {
+                lo: [0; 3],
+                size: [0; 3],
+            }; 3],
+            len: boxes.len(),
+        };
+        r.boxes[..boxes.len()].copy_from_slice(boxes);
+        r
+    }
+
+    fn boxes(&self) -> &[Cuboid] {
+        &self.boxes[..self.len]
+    }
+}
+
+/// `boxes` without box `i`, and `rest` added (in this order: the same
+/// boxes in the same order wherever they are made).
+fn replaced(boxes: &[Cuboid], i: usize, rest: &[Cuboid]) -> Vec<Cuboid> {
+    let mut out = boxes.to_vec();
+    out.swap_remove(i);
+    out.extend_from_slice(rest);
+    out
 }
 
 /// A hash of the boxes left on both sides (states with the same boxes
@@ -313,18 +353,16 @@ fn expand(
                     let pieces = st.pieces + 1 - joins.len();
                     for rt in rests(&t, &pt) {
                         for rs in &src_rests {
-                            let mut src: Vec<Cuboid> = st.src.clone();
-                            src.swap_remove(si);
-                            src.extend_from_slice(rs);
-                            let mut dst: Vec<Cuboid> = st.dst.clone();
-                            dst.swap_remove(ti);
-                            dst.extend_from_slice(&rt);
+                            let src = replaced(&st.src, si, rs);
+                            let dst = replaced(&st.dst, ti, &rt);
                             let score = pieces + src.len() + dst.len();
                             let k = key(&src, &dst);
                             let child = Child {
                                 parent,
-                                src,
-                                dst,
+                                si,
+                                src_rest: Rest::of(rs),
+                                ti,
+                                dst_rest: Rest::of(&rt),
                                 piece: ps,
                                 motion,
                                 joins: joins.clone(),
@@ -405,8 +443,8 @@ fn grow(parent: &State, c: Child) -> State {
         group,
     });
     State {
-        src: c.src,
-        dst: c.dst,
+        src: replaced(&parent.src, c.si, c.src_rest.boxes()),
+        dst: replaced(&parent.dst, c.ti, c.dst_rest.boxes()),
         placed,
         pieces: parent.pieces + 1 - c.joins.len(),
     }
