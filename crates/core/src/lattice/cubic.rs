@@ -1,7 +1,7 @@
 //! The cubic lattice: unit cubes `[x, y, z]`, 6 face-neighbours, the 24
 //! proper rotations and never a mirror image.
 
-use super::{Cell, Lattice, LatticeKind, Point, Symmetry};
+use super::{Cell, Lattice, LatticeKind, Point, Symmetry, AXIS_PERMUTATIONS};
 
 /// The cubic (voxel) lattice.
 #[derive(Clone, Copy, Debug, Default)]
@@ -44,16 +44,8 @@ impl Lattice for Cubic {
     }
     /// The 24 rotations (`mirror` is ignored: a solid cannot be turned inside out).
     fn symmetries(&self, _mirror: bool) -> Vec<Symmetry> {
-        const PERMS: [[usize; 3]; 6] = [
-            [0, 1, 2],
-            [0, 2, 1],
-            [1, 0, 2],
-            [1, 2, 0],
-            [2, 0, 1],
-            [2, 1, 0],
-        ];
         let mut out = Vec::with_capacity(24);
-        for perm in PERMS {
+        for perm in AXIS_PERMUTATIONS {
             for signs in 0..8 {
                 let mut m = [[0; 3]; 3];
                 for r in 0..3 {

@@ -22,6 +22,17 @@ pub use tri4::Tri4;
 use std::fmt;
 use std::str::FromStr;
 
+/// The six permutations of three axes (`[0, 1, 2]` first): the axis
+/// orders of the cubic lattice's rotations and of the guillotine cuts.
+pub(crate) const AXIS_PERMUTATIONS: [[usize; 3]; 6] = [
+    [0, 1, 2],
+    [0, 2, 1],
+    [1, 0, 2],
+    [1, 2, 0],
+    [2, 0, 1],
+    [2, 1, 0],
+];
+
 /// The largest coordinate a cell may have in a file (so that lattice points,
 /// up to 6 times larger, stay far from overflow).
 pub const MAX_COORDINATE: i64 = 1 << 24;

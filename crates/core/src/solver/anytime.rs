@@ -495,9 +495,7 @@ impl<'r, 'a> Run<'r, 'a> {
         else {
             return;
         };
-        if pieces[0].len() > self.max_pieces {
-            return;
-        }
+        // The incumbent keeps the cap on pieces.
         if let Some((c, s)) = search.candidate_of(&pieces) {
             let level = c.k - 1;
             self.inc.improve(search, c, s, level, 0, Via::Boxes);

@@ -24,7 +24,7 @@ use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use crate::lattice::{Cell, Symmetry};
+use crate::lattice::{Cell, Symmetry, AXIS_PERMUTATIONS};
 
 /// Figures covered by more boxes than this are not searched (the beam's
 /// branching grows with the boxes, and the pieces would be many).
@@ -157,13 +157,6 @@ struct State {
     pieces: usize,
 }
 
-impl State {
-    /// The beam's order: pieces so far plus boxes left on both sides.
-    fn score(&self) -> usize {
-        self.pieces + self.src.len() + self.dst.len()
-    }
-}
-
 /// Disjoint boxes covering `cells`: from the first uncovered cell in
 /// `(z, y, x)` order, as long along `x`, then `y`, then `z` as the figure
 /// allows. `None` when more than `max` boxes are needed.
@@ -220,20 +213,10 @@ fn cover(cells: &[Cell], max: usize) -> Option<Vec<Cuboid>> {
     Some(out)
 }
 
-/// The six orders of the three axes.
-const ORDERS: [[usize; 3]; 6] = [
-    [0, 1, 2],
-    [0, 2, 1],
-    [1, 0, 2],
-    [1, 2, 0],
-    [2, 0, 1],
-    [2, 1, 0],
-];
-
 /// The distinct ways to cut what is left of `b` once `piece` is taken.
 fn rests(b: &Cuboid, piece: &Cuboid) -> Vec<Vec<Cuboid>> {
     let mut out: Vec<Vec<Cuboid>> = Vec::new();
-    for order in ORDERS {
+    for order in AXIS_PERMUTATIONS {
         let mut r = b.rest(piece, order);
         r.sort_unstable();
         if !out.contains(&r) {
@@ -320,6 +303,7 @@ fn expand(
     st: &State,
     parent: usize,
     turns: &[Turn],
+    perms: &[[usize; 3]],
     out: &mut Vec<Child>,
     seen: &mut HashMap<u64, usize>,
 ) {
@@ -330,14 +314,8 @@ fn expand(
         return;
     };
     let t = st.dst[ti];
-    // Turns with the same axes give the same boxes; only the motion (and
-    // so what the piece joins) differs.
-    let mut perms: Vec<[usize; 3]> = turns.iter().map(|t| t.axis).collect();
-    perms.dedup();
-    perms.sort_unstable();
-    perms.dedup();
     for (si, s) in st.src.iter().enumerate() {
-        for axis in &perms {
+        for axis in perms {
             let mut pdt = [0; 3];
             let mut pds = [0; 3];
             for k in 0..3 {
@@ -464,6 +442,11 @@ fn beam(
         dst,
         ..State::default()
     }];
+    // Turns with the same axes give the same boxes; only the motion (and
+    // so what the piece joins) differs.
+    let mut perms: Vec<[usize; 3]> = turns.iter().map(|t| t.axis).collect();
+    perms.sort_unstable();
+    perms.dedup();
     let mut best: Option<State> = None;
     while !beam.is_empty() {
         if stop.load(Ordering::Relaxed) {
@@ -472,7 +455,7 @@ fn beam(
         let mut children = Vec::new();
         let mut seen = HashMap::new();
         for (i, st) in beam.iter().enumerate() {
-            expand(st, i, turns, &mut children, &mut seen);
+            expand(st, i, turns, &perms, &mut children, &mut seen);
         }
         // Stable: ties keep the order they were made in, so the search is
         // the same on every run.
@@ -490,7 +473,6 @@ fn beam(
             }
         }
         beam = next;
-        debug_assert!(beam.iter().all(|s| s.score() >= s.pieces));
     }
     best
 }
