@@ -7,6 +7,7 @@
 use std::sync::atomic::AtomicBool;
 
 use crate::figure::Figure;
+use crate::lattice::Symmetry;
 use crate::solver::candidate::{Candidate, Score};
 use crate::solver::explore::Executor;
 use crate::solver::incumbent::Incumbent;
@@ -49,6 +50,12 @@ const REBUILD_TOP: usize = 4;
 /// Constructive dissections tied with the best that regrouping also
 /// tries ([`Run::regroup`]).
 const TIES: usize = 4;
+/// The rungs of the guillotine cuts ([`guillotine::RUNGS`]) climbed before
+/// the rest of the run whether or not each improves: the plain beams and
+/// the pilots up to width 64 (about 20 s on 7³+14³+17³ = 20³; a wider
+/// pilot is not always better, and a narrower one often finds nothing
+/// below the plain beams).
+const BOXES_EAGER_RUNGS: usize = 6;
 
 /// Attempts (fresh streams) at one descent step while it ends near misses.
 const DESCENT_ATTEMPTS: usize = 4;
@@ -176,6 +183,11 @@ pub fn solve_anytime_with(
         if large && !search.stopped() {
             improved |= run.rebuild(REBUILD_BATCHES_PER_ROUND);
         }
+        // Figures of a few boxes: the next, wider rung of the guillotine
+        // cuts (until the last).
+        if !search.stopped() {
+            improved |= run.box_rung();
+        }
         if improved && large && !search.stopped() {
             let before = run.inc.pieces();
             run.regroup();
@@ -189,6 +201,14 @@ pub fn solve_anytime_with(
         }
     }
     Ok(run.finish())
+}
+
+/// Two figures of a few boxes on a grid lattice, as boxes.
+fn boxes_of(figures: &[Figure], syms: &[Symmetry]) -> Option<guillotine::Boxes> {
+    if figures.len() != 2 || !figures[0].lattice().lattice().is_grid() {
+        return None;
+    }
+    guillotine::Boxes::new([figures[0].cells(), figures[1].cells()], syms)
 }
 
 /// The figures are congruent: one piece, found at level 0.
@@ -240,6 +260,13 @@ struct Run<'r, 'a> {
     walk: Option<Candidate>,
     /// Batches of rebuilds so far (each draws its own streams).
     rebuild_batch: usize,
+    /// The figures as boxes, when they are two figures of a few boxes on
+    /// a grid lattice ([`Run::boxes`]).
+    boxes: Option<guillotine::Boxes>,
+    /// The next rung of [`guillotine::RUNGS`].
+    box_rung: usize,
+    /// The fewest pieces any rung found.
+    boxes_best: usize,
 }
 
 impl<'r, 'a> Run<'r, 'a> {
@@ -276,6 +303,9 @@ impl<'r, 'a> Run<'r, 'a> {
             ties: Vec::new(),
             walk: None,
             rebuild_batch: 0,
+            boxes: boxes_of(figures, &search.problem.geo.syms),
+            box_rung: 0,
+            boxes_best: usize::MAX,
         }
     }
 
@@ -483,23 +513,41 @@ impl<'r, 'a> Run<'r, 'a> {
     /// Guillotine cuts ([`guillotine`]) on two figures that are each a
     /// union of a few boxes, on a grid lattice; an improvement when it has
     /// fewer pieces.
+    ///
+    /// The rungs of [`guillotine::RUNGS`] in turn: the first
+    /// [`BOXES_EAGER_RUNGS`] always, then while each finds fewer pieces
+    /// than the rungs before it; the rounds climb the rest, one a round
+    /// ([`Run::box_rung`]).
     fn boxes(&mut self) {
-        let search = self.search;
-        let figures = search.figures;
-        if figures.len() != 2 || !figures[0].lattice().lattice().is_grid() {
-            return;
+        let mut progress = true;
+        while !self.search.stopped()
+            && self.box_rung < guillotine::RUNGS.len()
+            && (self.box_rung < BOXES_EAGER_RUNGS || progress)
+        {
+            let before = self.boxes_best;
+            self.box_rung();
+            progress = self.boxes_best < before;
         }
-        let cells = [figures[0].cells(), figures[1].cells()];
-        let Some(pieces) =
-            search.install(|| guillotine::dissect(cells, &search.problem.geo.syms, search.stop))
-        else {
-            return;
+    }
+
+    /// The next rung of the guillotine cuts, when the figures are boxes
+    /// and a rung is left: whether it improved the best dissection.
+    fn box_rung(&mut self) -> bool {
+        let search = self.search;
+        let (Some(boxes), Some(&rung)) = (&self.boxes, guillotine::RUNGS.get(self.box_rung)) else {
+            return false;
+        };
+        self.box_rung += 1;
+        let Some(pieces) = search.install(|| boxes.dissect(rung, search.stop)) else {
+            return false;
         };
         // The incumbent keeps the cap on pieces.
-        if let Some((c, s)) = search.candidate_of(&pieces) {
-            let level = c.k - 1;
-            self.inc.improve(search, c, s, level, 0, Via::Boxes);
-        }
+        let Some((c, s)) = search.candidate_of(&pieces) else {
+            return false;
+        };
+        self.boxes_best = self.boxes_best.min(c.k);
+        let level = c.k - 1;
+        self.inc.improve(search, c, s, level, 0, Via::Boxes)
     }
     /// Regrouping ([`regroup`]): groups of touching pieces of the best
     /// dissection, the smallest first, cut again exactly with fewer pieces,

@@ -12,7 +12,10 @@
 //! one piece, so a piece may be an L-prism or a slab bent round an edge
 //! (the shell that a large cube leaves in a larger one is filled by such
 //! slabs). The beam keeps the states with the fewest pieces plus boxes
-//! left, until both sides are used up.
+//! left, until both sides are used up; on the wider rungs of [`RUNGS`] it
+//! keeps instead the states whose greedy completion has the fewest pieces
+//! (the pilot method: the score alone cannot see that a cut which leaves
+//! one box more now saves pieces later).
 //!
 //! Only on lattices whose cells are the integer points and whose
 //! symmetries are signed permutations ([`Lattice::is_grid`]); written once
@@ -24,14 +27,44 @@ use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
 use std::sync::atomic::{AtomicBool, Ordering};
 
+use rayon::prelude::*;
+
 use crate::lattice::{Cell, Symmetry, AXIS_PERMUTATIONS};
 
 /// Figures covered by more boxes than this are not searched (the beam's
 /// branching grows with the boxes, and the pieces would be many).
 pub(crate) const MAX_BOXES: usize = 24;
 
-/// The beam widths tried, in order (each one a full search).
-pub(crate) const WIDTHS: [usize; 2] = [32, 128];
+/// One search of the ladder: the beam's width and its fan (`0`: the beam
+/// keeps the children of the lowest score; `f`: the `f * width` children
+/// of the lowest score are each completed greedily, and the beam keeps
+/// those whose completion has the fewest pieces).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Rung {
+    pub(crate) width: usize,
+    pub(crate) fan: usize,
+}
+
+/// The rungs, in the order the run climbs them: each one a full search,
+/// about twice to four times the work of the one before (on 7³+14³+17³ =
+/// 20³, two cores: 0.2 s for the plain beams, then about 2, 4, 8, 15, 30
+/// and 60 s).
+pub(crate) const RUNGS: [Rung; 8] = [
+    Rung { width: 32, fan: 0 },
+    Rung { width: 128, fan: 0 },
+    Rung { width: 8, fan: 8 },
+    Rung { width: 16, fan: 16 },
+    Rung { width: 32, fan: 16 },
+    Rung { width: 64, fan: 32 },
+    Rung {
+        width: 128,
+        fan: 32,
+    },
+    Rung {
+        width: 256,
+        fan: 32,
+    },
+];
 
 /// A box of cells: `lo` its lowest corner, `size` its extent per axis.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -428,15 +461,81 @@ fn grow(parent: &State, c: Child) -> State {
     }
 }
 
+/// The greedy completion of `st`: each step the child of the fewest
+/// pieces plus boxes left (the first on ties), its rests cut in the first
+/// order of the axes. `None` when stopped.
+fn rollout(
+    mut st: State,
+    turns: &[Turn],
+    perms: &[[usize; 3]],
+    stop: &AtomicBool,
+) -> Option<State> {
+    while !(st.src.is_empty() && st.dst.is_empty()) {
+        if stop.load(Ordering::Relaxed) {
+            return None;
+        }
+        let c = greedy_step(&st, turns, perms)?;
+        st = grow(&st, c);
+    }
+    Some(st)
+}
+
+/// The best child of `st` by score, the rests cut in the first order.
+fn greedy_step(st: &State, turns: &[Turn], perms: &[[usize; 3]]) -> Option<Child> {
+    let ti = (0..st.dst.len()).min_by_key(|&i| {
+        let b = &st.dst[i];
+        (b.lo[2], b.lo[1], b.lo[0])
+    })?;
+    let t = st.dst[ti];
+    let mut best: Option<Child> = None;
+    for (si, s) in st.src.iter().enumerate() {
+        for axis in perms {
+            let mut pdt = [0; 3];
+            let mut pds = [0; 3];
+            for k in 0..3 {
+                pdt[k] = t.size[k].min(s.size[axis[k]]);
+                pds[axis[k]] = pdt[k];
+            }
+            let ns = (0..3).filter(|&k| pds[k] < s.size[k]).count();
+            let nt = (0..3).filter(|&k| pdt[k] < t.size[k]).count();
+            for cs in corners(s.size, pds) {
+                let ps = s.corner(pds, cs);
+                for ct in corners(t.size, pdt) {
+                    let pt = t.corner(pdt, ct);
+                    let (motion, joins) = best_motion(st, turns, *axis, &ps, &pt);
+                    let pieces = st.pieces + 1 - joins.len();
+                    let score = pieces + st.src.len() - 1 + ns + st.dst.len() - 1 + nt;
+                    if best.as_ref().is_some_and(|b| b.score <= score) {
+                        continue;
+                    }
+                    best = Some(Child {
+                        parent: 0,
+                        si,
+                        src_rest: Rest::of(&s.rest(&ps, AXIS_PERMUTATIONS[0])),
+                        ti,
+                        dst_rest: Rest::of(&t.rest(&pt, AXIS_PERMUTATIONS[0])),
+                        piece: ps,
+                        motion,
+                        joins,
+                        score,
+                    });
+                }
+            }
+        }
+    }
+    best
+}
+
 /// The beam search of width `width` from `src` to `dst`: the finished
 /// state with the fewest pieces, `None` when stopped.
 fn beam(
     src: Vec<Cuboid>,
     dst: Vec<Cuboid>,
     turns: &[Turn],
-    width: usize,
+    rung: Rung,
     stop: &AtomicBool,
 ) -> Option<State> {
+    let Rung { width, fan } = rung;
     let mut beam = vec![State {
         src,
         dst,
@@ -460,10 +559,38 @@ fn beam(
         // Stable: ties keep the order they were made in, so the search is
         // the same on every run.
         children.sort_by_key(|c| c.score);
-        children.truncate(width);
-        let mut next = Vec::with_capacity(children.len());
-        for c in children {
-            let st = grow(&beam[c.parent], c);
+        let grown: Vec<State> = if fan > 0 {
+            children.truncate(width * fan);
+            let grown: Vec<State> = children
+                .into_iter()
+                .map(|c| grow(&beam[c.parent], c))
+                .collect();
+            // Each completion on its own: collected in order, the same
+            // on any number of threads.
+            let done: Vec<State> = grown
+                .par_iter()
+                .map(|st| rollout(st.clone(), turns, &perms, stop))
+                .collect::<Option<_>>()?;
+            let mut scored: Vec<(usize, State)> = Vec::with_capacity(grown.len());
+            for (st, done) in grown.into_iter().zip(done) {
+                if best.as_ref().is_none_or(|b| done.pieces < b.pieces) {
+                    best = Some(done.clone());
+                }
+                scored.push((done.pieces, st));
+            }
+            // Stable: ties keep the order of the scores.
+            scored.sort_by_key(|(n, _)| *n);
+            scored.truncate(width);
+            scored.into_iter().map(|(_, s)| s).collect()
+        } else {
+            children.truncate(width);
+            children
+                .into_iter()
+                .map(|c| grow(&beam[c.parent], c))
+                .collect()
+        };
+        let mut next = Vec::with_capacity(grown.len());
+        for st in grown {
             if st.src.is_empty() && st.dst.is_empty() {
                 if best.as_ref().is_none_or(|b| st.pieces < b.pieces) {
                     best = Some(st);
@@ -477,37 +604,45 @@ fn beam(
     best
 }
 
-/// A dissection of two figures (`cells[0]`, `cells[1]`, cells equal to
-/// points) into boxes and pieces made of touching boxes, under the
-/// symmetries `syms`: the pieces' cells per figure, `None` when a figure
-/// needs more than [`MAX_BOXES`] boxes, a symmetry is not a signed
-/// permutation, or the run is stopped. Each figure serves as the source
-/// in turn, with every width of [`WIDTHS`]; the fewest pieces are kept
-/// (the first found on ties).
-pub(crate) fn dissect(
-    cells: [&[Cell]; 2],
-    syms: &[Symmetry],
-    stop: &AtomicBool,
-) -> Option<Vec<Vec<Vec<Cell>>>> {
-    let turns: Vec<Turn> = syms.iter().map(Turn::of).collect::<Option<_>>()?;
-    let boxes = [cover(cells[0], MAX_BOXES)?, cover(cells[1], MAX_BOXES)?];
-    let mut best: Option<(usize, State)> = None;
-    for width in WIDTHS {
+/// Two figures covered by boxes, ready for the beam: the first is the
+/// source of one search and the target of the other.
+pub(crate) struct Boxes {
+    turns: Vec<Turn>,
+    boxes: [Vec<Cuboid>; 2],
+}
+
+impl Boxes {
+    /// The boxes of two figures (`cells[0]`, `cells[1]`, cells equal to
+    /// points) under the symmetries `syms`; `None` when a figure needs
+    /// more than [`MAX_BOXES`] boxes or a symmetry is not a signed
+    /// permutation.
+    pub(crate) fn new(cells: [&[Cell]; 2], syms: &[Symmetry]) -> Option<Boxes> {
+        let turns: Vec<Turn> = syms.iter().map(Turn::of).collect::<Option<_>>()?;
+        let boxes = [cover(cells[0], MAX_BOXES)?, cover(cells[1], MAX_BOXES)?];
+        Some(Boxes { turns, boxes })
+    }
+
+    /// A dissection into boxes and pieces made of touching boxes, by the
+    /// search of `rung` with each figure as the source in turn (the fewer
+    /// pieces kept; the first on ties): the pieces' cells per figure,
+    /// `None` when stopped.
+    pub(crate) fn dissect(&self, rung: Rung, stop: &AtomicBool) -> Option<Vec<Vec<Vec<Cell>>>> {
+        let mut best: Option<(usize, State)> = None;
         for from in 0..2 {
             let st = beam(
-                boxes[from].clone(),
-                boxes[1 - from].clone(),
-                &turns,
-                width,
+                self.boxes[from].clone(),
+                self.boxes[1 - from].clone(),
+                &self.turns,
+                rung,
                 stop,
             )?;
             if best.as_ref().is_none_or(|(_, b)| st.pieces < b.pieces) {
                 best = Some((from, st));
             }
         }
+        let (from, st) = best?;
+        Some(pieces_of(&st, from, &self.turns))
     }
-    let (from, st) = best?;
-    Some(pieces_of(&st, from, &turns))
 }
 
 /// The pieces of a finished state, per figure (`from`: the source's

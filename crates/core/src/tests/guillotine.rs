@@ -4,7 +4,7 @@ use std::sync::atomic::AtomicBool;
 
 use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind};
-use crate::solver::guillotine::dissect;
+use crate::solver::guillotine::{Boxes, Rung, RUNGS};
 use crate::tests::util::{geometry, labelled};
 use crate::verify::verify_pieces;
 
@@ -31,14 +31,20 @@ fn cubes(sides: &[i32], whole: i32) -> [Figure; 2] {
     ]
 }
 
-/// Dissects two figures, checks the answer with the verifier and returns
-/// its pieces.
-fn solved(lattice: LatticeKind, mirror: bool, figs: &[Figure; 2]) -> Option<usize> {
+/// Dissects two figures by the search of `rung`, checks the answer with
+/// the verifier and returns its pieces.
+fn solved_by(rung: Rung, lattice: LatticeKind, mirror: bool, figs: &[Figure; 2]) -> Option<usize> {
     let syms = geometry(lattice, mirror).syms;
     let stop = AtomicBool::new(false);
-    let pieces = dissect([figs[0].cells(), figs[1].cells()], &syms, &stop)?;
+    let boxes = Boxes::new([figs[0].cells(), figs[1].cells()], &syms)?;
+    let pieces = boxes.dissect(rung, &stop)?;
     verify_pieces(lattice, mirror, figs, &pieces).expect("a valid dissection");
     Some(pieces[0].len())
+}
+
+/// [`solved_by`] the wider plain beam.
+fn solved(lattice: LatticeKind, mirror: bool, figs: &[Figure; 2]) -> Option<usize> {
+    solved_by(RUNGS[1], lattice, mirror, figs)
 }
 
 /// 1³ + 6³ + 8³ = 9³: the 8³ whole, the 6³ cut into slabs bent round the
@@ -52,6 +58,30 @@ fn sums_of_cubes_get_bent_slabs() {
         Some(10)
     );
     assert_eq!(solved(LatticeKind::Cubic, false, &[b, a]), Some(10));
+}
+
+/// 3³ + 4³ + 5³ = 6³, the cubes apart: the plain beam stops at 10 pieces;
+/// the pilot of width 32, each state's 16 best children completed
+/// greedily, finds an optimal 8 (the corners of the 6³ need 8).
+#[test]
+fn the_pilot_sees_past_the_score() {
+    let [a, b] = cubes(&[3, 4, 5], 6);
+    let figs = [a, b];
+    assert_eq!(solved(LatticeKind::Cubic, false, &figs), Some(10));
+    let pilot = Rung { width: 32, fan: 16 };
+    assert!(RUNGS.contains(&pilot));
+    assert_eq!(solved_by(pilot, LatticeKind::Cubic, false, &figs), Some(8));
+}
+
+/// Every rung, on a small sum of cubes: a valid dissection (checked by
+/// the verifier) of 8 (the corner bound) to 11 pieces.
+#[test]
+fn every_rung_dissects() {
+    let figs = cubes(&[3, 4, 5], 6);
+    for rung in RUNGS {
+        let k = solved_by(rung, LatticeKind::Cubic, false, &figs).expect("boxes");
+        assert!((8..=11).contains(&k), "{rung:?}: {k} pieces");
+    }
 }
 
 /// The square lattice too: 3² + 4² = 5², the squares apart.
