@@ -520,7 +520,8 @@ impl<'r, 'a> Run<'r, 'a> {
     /// ([`Run::box_rung`]).
     fn boxes(&mut self) {
         let mut progress = true;
-        while !self.search.stopped()
+        while self.boxes.is_some()
+            && !self.search.stopped()
             && self.box_rung < guillotine::RUNGS.len()
             && (self.box_rung < BOXES_EAGER_RUNGS || progress)
         {

@@ -32,8 +32,12 @@ use rayon::prelude::*;
 use crate::lattice::{Cell, Symmetry, AXIS_PERMUTATIONS};
 
 /// Figures covered by more boxes than this are not searched (the beam's
-/// branching grows with the boxes, and the pieces would be many).
-pub(crate) const MAX_BOXES: usize = 24;
+/// branching and its greedy completions grow with the boxes, and the
+/// pieces would be many). Sums of cubes, cuboids with a cavity and joined
+/// cubes take 1-8 boxes; a rasterized disc (23) or a Sierpinski carpet
+/// (18) is better served by the other steps, and the pilot rungs would
+/// take seconds on them.
+pub(crate) const MAX_BOXES: usize = 12;
 
 /// One search of the ladder: the beam's width and its fan (`0`: the beam
 /// keeps the children of the lowest score; `f`: the `f * width` children

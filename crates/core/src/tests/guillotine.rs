@@ -4,7 +4,7 @@ use std::sync::atomic::AtomicBool;
 
 use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind};
-use crate::solver::guillotine::{Boxes, Rung, RUNGS};
+use crate::solver::guillotine::{Boxes, Rung, MAX_BOXES, RUNGS};
 use crate::tests::util::{geometry, labelled};
 use crate::verify::verify_pieces;
 
@@ -93,15 +93,28 @@ fn squares_apart_are_cut_into_rectangles() {
     assert!((4..=6).contains(&k), "{k} pieces");
 }
 
-/// A figure that needs many boxes (a staircase) is not searched.
-#[test]
-fn figures_of_many_boxes_are_left_alone() {
-    let stairs: Vec<String> = (1..=30).map(|w| "A".repeat(w)).collect();
+/// A staircase of `steps` steps (one box each) and a rectangle of
+/// `rows` rows of the same area.
+fn staircase(steps: usize, rows: usize) -> [Figure; 2] {
+    let stairs: Vec<String> = (1..=steps).map(|w| "A".repeat(w)).collect();
     let (a, _) = labelled(LatticeKind::Square, &stairs.join("|"));
     let n = a.len();
-    let (b, _) = labelled(LatticeKind::Square, &vec!["A".repeat(n / 15); 15].join("|"));
+    let (b, _) = labelled(
+        LatticeKind::Square,
+        &vec!["A".repeat(n / rows); rows].join("|"),
+    );
     assert_eq!(a.len(), b.len());
-    assert_eq!(solved(LatticeKind::Square, true, &[a, b]), None);
+    [a, b]
+}
+
+/// A figure that needs more than `MAX_BOXES` boxes (a staircase) is not
+/// searched; one step fewer is.
+#[test]
+fn figures_of_many_boxes_are_left_alone() {
+    assert_eq!(MAX_BOXES, 12);
+    assert_eq!(solved(LatticeKind::Square, true, &staircase(13, 7)), None);
+    let k = solved(LatticeKind::Square, true, &staircase(12, 6)).expect("12 boxes");
+    assert!((2..=12).contains(&k), "{k} pieces");
 }
 
 /// Only the square and cubic lattices are grids of boxes.
