@@ -115,7 +115,9 @@ def test_distributed_search_with_puzzle_options_and_progress(cluster: None, tmp_
 
     from conftest import check_independently
 
-    figures, _ = instance("squares-3-4-split-to-5", "square")
+    # Not a figure of a few boxes: the guillotine cuts would give both
+    # solutions before the level search sends any batch to the cluster.
+    figures, _ = instance("tri3-triangles-6-8-split-to-10", "tri3")
     calls: List[Tuple[int, float, str]] = []
     d = dray.solve(
         figures, tasks=2, solutions=2, min_piece=2, time_limit=20,
