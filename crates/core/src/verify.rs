@@ -223,6 +223,8 @@ fn count_components(cells: &[Cell], neighbors: impl Fn(Cell) -> Vec<Cell>) -> us
 /// rotations (and 4 reflections with `mirror`), in 3D the 24 rotations.
 fn own_symmetries(dim: usize, mirror: bool) -> Vec<[[i32; 3]; 3]> {
     let mut out = Vec::new();
+    // Its own list, not the lattice's `AXIS_PERMUTATIONS`: the checker
+    // shares nothing with the symmetries it checks.
     let perms: Vec<[usize; 3]> = if dim == 2 {
         vec![[0, 1, 2], [1, 0, 2]]
     } else {

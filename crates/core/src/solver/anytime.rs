@@ -52,7 +52,7 @@ const REBUILD_TOP: usize = 4;
 const TIES: usize = 4;
 /// The rungs of the guillotine cuts ([`guillotine::RUNGS`]) climbed before
 /// the rest of the run whether or not each improves: the plain beams and
-/// the pilots up to width 64 (about 20 s on 7³+14³+17³ = 20³; a wider
+/// the pilots up to width 64 (about 13 s on 7³+14³+17³ = 20³, two threads; a wider
 /// pilot is not always better, and a narrower one often finds nothing
 /// below the plain beams).
 const BOXES_EAGER_RUNGS: usize = 6;

@@ -51,8 +51,9 @@ pub(crate) struct Rung {
 
 /// The rungs, in the order the run climbs them: each one a full search,
 /// about twice to four times the work of the one before (on 7³+14³+17³ =
-/// 20³, two cores: 0.2 s for the plain beams, then about 2, 4, 8, 15, 30
-/// and 60 s).
+/// 20³, the completions one at a time: 0.2 and 0.7 s for the plain beams,
+/// then about 0.5, 2, 3, 13, 26 and 54 s; about half that on two
+/// threads).
 pub(crate) const RUNGS: [Rung; 8] = [
     Rung { width: 32, fan: 0 },
     Rung { width: 128, fan: 0 },
@@ -334,6 +335,28 @@ fn key(src: &[Cuboid], dst: &[Cuboid]) -> u64 {
     h.finish()
 }
 
+/// The target box a step fills: the one whose low corner comes first in
+/// `(z, y, x)` order; `None` when the target is used up.
+fn target(st: &State) -> Option<usize> {
+    (0..st.dst.len()).min_by_key(|&i| {
+        let b = &st.dst[i];
+        (b.lo[2], b.lo[1], b.lo[0])
+    })
+}
+
+/// The sizes of the largest piece that source box `s` and target box `t`
+/// both hold when target axis `k` takes source axis `axis[k]`: in the
+/// source's axes, then in the target's.
+fn piece_sizes(s: &Cuboid, t: &Cuboid, axis: &[usize; 3]) -> ([i32; 3], [i32; 3]) {
+    let mut pdt = [0; 3];
+    let mut pds = [0; 3];
+    for k in 0..3 {
+        pdt[k] = t.size[k].min(s.size[axis[k]]);
+        pds[axis[k]] = pdt[k];
+    }
+    (pds, pdt)
+}
+
 /// Every step from state `st` (index `parent` in the beam), into `out`
 /// (keyed by the boxes left, the best score kept).
 fn expand(
@@ -344,21 +367,13 @@ fn expand(
     out: &mut Vec<Child>,
     seen: &mut HashMap<u64, usize>,
 ) {
-    let Some(ti) = (0..st.dst.len()).min_by_key(|&i| {
-        let b = &st.dst[i];
-        (b.lo[2], b.lo[1], b.lo[0])
-    }) else {
+    let Some(ti) = target(st) else {
         return;
     };
     let t = st.dst[ti];
     for (si, s) in st.src.iter().enumerate() {
         for axis in perms {
-            let mut pdt = [0; 3];
-            let mut pds = [0; 3];
-            for k in 0..3 {
-                pdt[k] = t.size[k].min(s.size[axis[k]]);
-                pds[axis[k]] = pdt[k];
-            }
+            let (pds, pdt) = piece_sizes(s, &t, axis);
             for cs in corners(s.size, pds) {
                 let ps = s.corner(pds, cs);
                 let src_rests = rests(s, &ps);
@@ -486,20 +501,12 @@ fn rollout(
 
 /// The best child of `st` by score, the rests cut in the first order.
 fn greedy_step(st: &State, turns: &[Turn], perms: &[[usize; 3]]) -> Option<Child> {
-    let ti = (0..st.dst.len()).min_by_key(|&i| {
-        let b = &st.dst[i];
-        (b.lo[2], b.lo[1], b.lo[0])
-    })?;
+    let ti = target(st)?;
     let t = st.dst[ti];
     let mut best: Option<Child> = None;
     for (si, s) in st.src.iter().enumerate() {
         for axis in perms {
-            let mut pdt = [0; 3];
-            let mut pds = [0; 3];
-            for k in 0..3 {
-                pdt[k] = t.size[k].min(s.size[axis[k]]);
-                pds[axis[k]] = pdt[k];
-            }
+            let (pds, pdt) = piece_sizes(s, &t, axis);
             let ns = (0..3).filter(|&k| pds[k] < s.size[k]).count();
             let nt = (0..3).filter(|&k| pdt[k] < t.size[k]).count();
             for cs in corners(s.size, pds) {
@@ -563,12 +570,12 @@ fn beam(
         // Stable: ties keep the order they were made in, so the search is
         // the same on every run.
         children.sort_by_key(|c| c.score);
-        let grown: Vec<State> = if fan > 0 {
-            children.truncate(width * fan);
-            let grown: Vec<State> = children
-                .into_iter()
-                .map(|c| grow(&beam[c.parent], c))
-                .collect();
+        children.truncate(width * fan.max(1));
+        let mut grown: Vec<State> = children
+            .into_iter()
+            .map(|c| grow(&beam[c.parent], c))
+            .collect();
+        if fan > 0 {
             // Each completion on its own: collected in order, the same
             // on any number of threads.
             let done: Vec<State> = grown
@@ -577,22 +584,17 @@ fn beam(
                 .collect::<Option<_>>()?;
             let mut scored: Vec<(usize, State)> = Vec::with_capacity(grown.len());
             for (st, done) in grown.into_iter().zip(done) {
-                if best.as_ref().is_none_or(|b| done.pieces < b.pieces) {
-                    best = Some(done.clone());
+                let pieces = done.pieces;
+                if best.as_ref().is_none_or(|b| pieces < b.pieces) {
+                    best = Some(done);
                 }
-                scored.push((done.pieces, st));
+                scored.push((pieces, st));
             }
             // Stable: ties keep the order of the scores.
             scored.sort_by_key(|(n, _)| *n);
             scored.truncate(width);
-            scored.into_iter().map(|(_, s)| s).collect()
-        } else {
-            children.truncate(width);
-            children
-                .into_iter()
-                .map(|c| grow(&beam[c.parent], c))
-                .collect()
-        };
+            grown = scored.into_iter().map(|(_, s)| s).collect();
+        }
         let mut next = Vec::with_capacity(grown.len());
         for st in grown {
             if st.src.is_empty() && st.dst.is_empty() {
