@@ -184,8 +184,10 @@ pub fn solve_anytime_with(
             improved |= run.rebuild(REBUILD_BATCHES_PER_ROUND);
         }
         // Figures of a few boxes: the next, wider rung of the guillotine
-        // cuts (until the last).
-        if !search.stopped() {
+        // cuts (until the last), while they hold the best count (where the
+        // search does better, as on joined cubes, the wide rungs would
+        // only take its time).
+        if !search.stopped() && run.boxes_hold_the_best() {
             improved |= run.box_rung();
         }
         if improved && large && !search.stopped() {
@@ -531,24 +533,36 @@ impl<'r, 'a> Run<'r, 'a> {
         }
     }
 
+    /// Whether the guillotine cuts found as few pieces as the best
+    /// dissection has.
+    fn boxes_hold_the_best(&self) -> bool {
+        self.inc.pieces().is_some_and(|k| self.boxes_best <= k)
+    }
+
     /// The next rung of the guillotine cuts, when the figures are boxes
-    /// and a rung is left: whether it improved the best dissection.
+    /// and a rung is left, in each order of [`guillotine::ORDERS`]
+    /// (each answer offered to the incumbent as it comes): whether it
+    /// improved the best dissection.
     fn box_rung(&mut self) -> bool {
         let search = self.search;
         let (Some(boxes), Some(&rung)) = (&self.boxes, guillotine::RUNGS.get(self.box_rung)) else {
             return false;
         };
         self.box_rung += 1;
-        let Some(pieces) = search.install(|| boxes.dissect(rung, search.stop)) else {
-            return false;
-        };
-        // The incumbent keeps the cap on pieces.
-        let Some((c, s)) = search.candidate_of(&pieces) else {
-            return false;
-        };
-        self.boxes_best = self.boxes_best.min(c.k);
-        let level = c.k - 1;
-        self.inc.improve(search, c, s, level, 0, Via::Boxes)
+        let mut improved = false;
+        for order in guillotine::ORDERS {
+            let Some(pieces) = search.install(|| boxes.dissect(rung, order, search.stop)) else {
+                break;
+            };
+            // The incumbent keeps the cap on pieces.
+            let Some((c, s)) = search.candidate_of(&pieces) else {
+                continue;
+            };
+            self.boxes_best = self.boxes_best.min(c.k);
+            let level = c.k - 1;
+            improved |= self.inc.improve(search, c, s, level, 0, Via::Boxes);
+        }
+        improved
     }
     /// Regrouping ([`regroup`]): groups of touching pieces of the best
     /// dissection, the smallest first, cut again exactly with fewer pieces,

@@ -3,8 +3,8 @@
 //! found by a beam search.
 //!
 //! Each figure is covered by disjoint boxes ([`cover`]): one is the
-//! *source*, the other the *target*. A step takes the target box whose
-//! low corner comes first and fills one of its corners with a piece cut
+//! *source*, the other the *target*. A step takes the target box that
+//! comes first in an [`Order`] and fills one of its corners with a piece cut
 //! from a corner of a source box, turned by a symmetry; the piece is as
 //! large as both boxes allow along every axis. What is left of either box
 //! is cut into at most three boxes by guillotine cuts, in any order of the
@@ -15,7 +15,8 @@
 //! left, until both sides are used up; on the wider rungs of [`RUNGS`] it
 //! keeps instead the states whose greedy completion has the fewest pieces
 //! (the pilot method: the score alone cannot see that a cut which leaves
-//! one box more now saves pieces later).
+//! one box more now saves pieces later). Every rung runs once per order of
+//! [`ORDERS`]: which order does best depends on the figure.
 //!
 //! Only on lattices whose cells are the integer points and whose
 //! symmetries are signed permutations ([`Lattice::is_grid`]); written once
@@ -70,6 +71,39 @@ pub(crate) const RUNGS: [Rung; 8] = [
         fan: 32,
     },
 ];
+
+/// Which target box a step fills (and so the order in which the target is
+/// used up). The answers differ a good deal from one order to another and
+/// no order is best on every figure, so each rung runs them all
+/// ([`ORDERS`]); ties go to the lowest corner in `(z, y, x)` order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Order {
+    /// The lowest corner in `(z, y, x)` order.
+    Low,
+    /// The box whose shortest side is the shortest.
+    Thin,
+    /// The lowest corner in `(x, y, z)` order.
+    LowX,
+    /// The box whose shortest side is the longest.
+    Thick,
+}
+
+/// The orders each rung runs, in turn.
+pub(crate) const ORDERS: [Order; 4] = [Order::Low, Order::Thin, Order::LowX, Order::Thick];
+
+impl Order {
+    /// The key whose least value among the target boxes is filled next.
+    fn key(self, b: &Cuboid) -> [i32; 4] {
+        let [x, y, z] = b.lo;
+        let short = b.size[0].min(b.size[1]).min(b.size[2]);
+        match self {
+            Order::Low => [z, y, x, 0],
+            Order::Thin => [short, z, y, x],
+            Order::LowX => [x, y, z, 0],
+            Order::Thick => [-short, z, y, x],
+        }
+    }
+}
 
 /// A box of cells: `lo` its lowest corner, `size` its extent per axis.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -335,13 +369,32 @@ fn key(src: &[Cuboid], dst: &[Cuboid]) -> u64 {
     h.finish()
 }
 
-/// The target box a step fills: the one whose low corner comes first in
-/// `(z, y, x)` order; `None` when the target is used up.
-fn target(st: &State) -> Option<usize> {
-    (0..st.dst.len()).min_by_key(|&i| {
-        let b = &st.dst[i];
-        (b.lo[2], b.lo[1], b.lo[0])
-    })
+/// The target box a step fills, the first by `order`; `None` when the
+/// target is used up.
+fn target(st: &State, order: Order) -> Option<usize> {
+    (0..st.dst.len()).min_by_key(|&i| order.key(&st.dst[i]))
+}
+
+/// What a step may do: the turns, their distinct axis permutations (turns
+/// with the same axes give the same boxes; only the motion, and so what
+/// the piece joins, differs) and the order the target boxes are filled in.
+struct Moves<'a> {
+    turns: &'a [Turn],
+    perms: Vec<[usize; 3]>,
+    order: Order,
+}
+
+impl Moves<'_> {
+    fn new(turns: &[Turn], order: Order) -> Moves<'_> {
+        let mut perms: Vec<[usize; 3]> = turns.iter().map(|t| t.axis).collect();
+        perms.sort_unstable();
+        perms.dedup();
+        Moves {
+            turns,
+            perms,
+            order,
+        }
+    }
 }
 
 /// The sizes of the largest piece that source box `s` and target box `t`
@@ -362,24 +415,23 @@ fn piece_sizes(s: &Cuboid, t: &Cuboid, axis: &[usize; 3]) -> ([i32; 3], [i32; 3]
 fn expand(
     st: &State,
     parent: usize,
-    turns: &[Turn],
-    perms: &[[usize; 3]],
+    moves: &Moves<'_>,
     out: &mut Vec<Child>,
     seen: &mut HashMap<u64, usize>,
 ) {
-    let Some(ti) = target(st) else {
+    let Some(ti) = target(st, moves.order) else {
         return;
     };
     let t = st.dst[ti];
     for (si, s) in st.src.iter().enumerate() {
-        for axis in perms {
+        for axis in &moves.perms {
             let (pds, pdt) = piece_sizes(s, &t, axis);
             for cs in corners(s.size, pds) {
                 let ps = s.corner(pds, cs);
                 let src_rests = rests(s, &ps);
                 for ct in corners(t.size, pdt) {
                     let pt = t.corner(pdt, ct);
-                    let (motion, joins) = best_motion(st, turns, *axis, &ps, &pt);
+                    let (motion, joins) = best_motion(st, moves.turns, *axis, &ps, &pt);
                     let pieces = st.pieces + 1 - joins.len();
                     for rt in rests(&t, &pt) {
                         for rs in &src_rests {
@@ -483,29 +535,24 @@ fn grow(parent: &State, c: Child) -> State {
 /// The greedy completion of `st`: each step the child of the fewest
 /// pieces plus boxes left (the first on ties), its rests cut in the first
 /// order of the axes. `None` when stopped.
-fn rollout(
-    mut st: State,
-    turns: &[Turn],
-    perms: &[[usize; 3]],
-    stop: &AtomicBool,
-) -> Option<State> {
+fn rollout(mut st: State, moves: &Moves<'_>, stop: &AtomicBool) -> Option<State> {
     while !(st.src.is_empty() && st.dst.is_empty()) {
         if stop.load(Ordering::Relaxed) {
             return None;
         }
-        let c = greedy_step(&st, turns, perms)?;
+        let c = greedy_step(&st, moves)?;
         st = grow(&st, c);
     }
     Some(st)
 }
 
 /// The best child of `st` by score, the rests cut in the first order.
-fn greedy_step(st: &State, turns: &[Turn], perms: &[[usize; 3]]) -> Option<Child> {
-    let ti = target(st)?;
+fn greedy_step(st: &State, moves: &Moves<'_>) -> Option<Child> {
+    let ti = target(st, moves.order)?;
     let t = st.dst[ti];
     let mut best: Option<Child> = None;
     for (si, s) in st.src.iter().enumerate() {
-        for axis in perms {
+        for axis in &moves.perms {
             let (pds, pdt) = piece_sizes(s, &t, axis);
             let ns = (0..3).filter(|&k| pds[k] < s.size[k]).count();
             let nt = (0..3).filter(|&k| pdt[k] < t.size[k]).count();
@@ -513,7 +560,7 @@ fn greedy_step(st: &State, turns: &[Turn], perms: &[[usize; 3]]) -> Option<Child
                 let ps = s.corner(pds, cs);
                 for ct in corners(t.size, pdt) {
                     let pt = t.corner(pdt, ct);
-                    let (motion, joins) = best_motion(st, turns, *axis, &ps, &pt);
+                    let (motion, joins) = best_motion(st, moves.turns, *axis, &ps, &pt);
                     let pieces = st.pieces + 1 - joins.len();
                     let score = pieces + st.src.len() - 1 + ns + st.dst.len() - 1 + nt;
                     if best.as_ref().is_some_and(|b| b.score <= score) {
@@ -537,12 +584,12 @@ fn greedy_step(st: &State, turns: &[Turn], perms: &[[usize; 3]]) -> Option<Child
     best
 }
 
-/// The beam search of width `width` from `src` to `dst`: the finished
-/// state with the fewest pieces, `None` when stopped.
+/// The beam search of `rung` from `src` to `dst`: the finished state with
+/// the fewest pieces, `None` when stopped.
 fn beam(
     src: Vec<Cuboid>,
     dst: Vec<Cuboid>,
-    turns: &[Turn],
+    moves: &Moves<'_>,
     rung: Rung,
     stop: &AtomicBool,
 ) -> Option<State> {
@@ -552,11 +599,6 @@ fn beam(
         dst,
         ..State::default()
     }];
-    // Turns with the same axes give the same boxes; only the motion (and
-    // so what the piece joins) differs.
-    let mut perms: Vec<[usize; 3]> = turns.iter().map(|t| t.axis).collect();
-    perms.sort_unstable();
-    perms.dedup();
     let mut best: Option<State> = None;
     while !beam.is_empty() {
         if stop.load(Ordering::Relaxed) {
@@ -565,7 +607,7 @@ fn beam(
         let mut children = Vec::new();
         let mut seen = HashMap::new();
         for (i, st) in beam.iter().enumerate() {
-            expand(st, i, turns, &perms, &mut children, &mut seen);
+            expand(st, i, moves, &mut children, &mut seen);
         }
         // Stable: ties keep the order they were made in, so the search is
         // the same on every run.
@@ -580,7 +622,7 @@ fn beam(
             // on any number of threads.
             let done: Vec<State> = grown
                 .par_iter()
-                .map(|st| rollout(st.clone(), turns, &perms, stop))
+                .map(|st| rollout(st.clone(), moves, stop))
                 .collect::<Option<_>>()?;
             let mut scored: Vec<(usize, State)> = Vec::with_capacity(grown.len());
             for (st, done) in grown.into_iter().zip(done) {
@@ -629,16 +671,22 @@ impl Boxes {
     }
 
     /// A dissection into boxes and pieces made of touching boxes, by the
-    /// search of `rung` with each figure as the source in turn (the fewer
-    /// pieces kept; the first on ties): the pieces' cells per figure,
-    /// `None` when stopped.
-    pub(crate) fn dissect(&self, rung: Rung, stop: &AtomicBool) -> Option<Vec<Vec<Vec<Cell>>>> {
+    /// search of `rung` filling the target's boxes in `order`, with each
+    /// figure as the source in turn (the fewer pieces kept; the first on
+    /// ties): the pieces' cells per figure, `None` when stopped.
+    pub(crate) fn dissect(
+        &self,
+        rung: Rung,
+        order: Order,
+        stop: &AtomicBool,
+    ) -> Option<Vec<Vec<Vec<Cell>>>> {
+        let moves = Moves::new(&self.turns, order);
         let mut best: Option<(usize, State)> = None;
         for from in 0..2 {
             let st = beam(
                 self.boxes[from].clone(),
                 self.boxes[1 - from].clone(),
-                &self.turns,
+                &moves,
                 rung,
                 stop,
             )?;

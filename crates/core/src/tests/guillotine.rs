@@ -4,7 +4,7 @@ use std::sync::atomic::AtomicBool;
 
 use crate::figure::Figure;
 use crate::lattice::{Cell, LatticeKind};
-use crate::solver::guillotine::{Boxes, Rung, MAX_BOXES, RUNGS};
+use crate::solver::guillotine::{Boxes, Order, Rung, MAX_BOXES, ORDERS, RUNGS};
 use crate::tests::util::{geometry, labelled};
 use crate::verify::verify_pieces;
 
@@ -31,15 +31,26 @@ fn cubes(sides: &[i32], whole: i32) -> [Figure; 2] {
     ]
 }
 
-/// Dissects two figures by the search of `rung`, checks the answer with
-/// the verifier and returns its pieces.
-fn solved_by(rung: Rung, lattice: LatticeKind, mirror: bool, figs: &[Figure; 2]) -> Option<usize> {
+/// Dissects two figures by the search of `rung` in `order`, checks the
+/// answer with the verifier and returns its pieces.
+fn solved_in(
+    rung: Rung,
+    order: Order,
+    lattice: LatticeKind,
+    mirror: bool,
+    figs: &[Figure; 2],
+) -> Option<usize> {
     let syms = geometry(lattice, mirror).syms;
     let stop = AtomicBool::new(false);
     let boxes = Boxes::new([figs[0].cells(), figs[1].cells()], &syms)?;
-    let pieces = boxes.dissect(rung, &stop)?;
+    let pieces = boxes.dissect(rung, order, &stop)?;
     verify_pieces(lattice, mirror, figs, &pieces).expect("a valid dissection");
     Some(pieces[0].len())
+}
+
+/// [`solved_in`] the first order.
+fn solved_by(rung: Rung, lattice: LatticeKind, mirror: bool, figs: &[Figure; 2]) -> Option<usize> {
+    solved_in(rung, ORDERS[0], lattice, mirror, figs)
 }
 
 /// [`solved_by`] the wider plain beam.
@@ -73,15 +84,34 @@ fn the_pilot_sees_past_the_score() {
     assert_eq!(solved_by(pilot, LatticeKind::Cubic, false, &figs), Some(8));
 }
 
-/// Every rung, on a small sum of cubes: a valid dissection (checked by
-/// the verifier) of 8 (the corner bound) to 11 pieces.
+/// Every rung in every order, on a small sum of cubes: a valid
+/// dissection (checked by the verifier) of 8 (the corner bound) to 13
+/// pieces.
 #[test]
 fn every_rung_dissects() {
     let figs = cubes(&[3, 4, 5], 6);
     for rung in RUNGS {
-        let k = solved_by(rung, LatticeKind::Cubic, false, &figs).expect("boxes");
-        assert!((8..=11).contains(&k), "{rung:?}: {k} pieces");
+        for order in ORDERS {
+            let k = solved_in(rung, order, LatticeKind::Cubic, false, &figs).expect("boxes");
+            assert!((8..=13).contains(&k), "{rung:?} {order:?}: {k} pieces");
+        }
     }
+}
+
+/// The order the target's boxes are filled in changes the answer: on
+/// 3³ + 4³ + 5³ = 6³ the pilot of width 16 gives 9 pieces filling the
+/// lowest corner in `(z, y, x)` order first, an optimal 8 in `(x, y, z)`
+/// order; so every rung runs every order.
+#[test]
+fn the_order_of_the_target_boxes_matters() {
+    let figs = cubes(&[3, 4, 5], 6);
+    let rung = Rung { width: 16, fan: 16 };
+    assert!(RUNGS.contains(&rung));
+    assert_eq!(ORDERS[0], Order::Low);
+    assert!(ORDERS.contains(&Order::LowX));
+    let low = solved_in(rung, Order::Low, LatticeKind::Cubic, false, &figs);
+    let low_x = solved_in(rung, Order::LowX, LatticeKind::Cubic, false, &figs);
+    assert_eq!((low, low_x), (Some(9), Some(8)));
 }
 
 /// The square lattice too: 3² + 4² = 5², the squares apart.
