@@ -57,6 +57,15 @@ const TIES: usize = 4;
 /// below the plain beams).
 const BOXES_EAGER_RUNGS: usize = 6;
 
+/// A constructive count out of the level search's reach: the ladder climbs
+/// one piece per level from two, and on voxel figures of a few hundred
+/// cells a level takes seconds (a 252-voxel pawn into a 6×6×7 box: 4
+/// pieces at 25 s, against 19 from the greedy). Figures under
+/// [`coarse::MIN_CELLS`] whose greedy has at least this many pieces get
+/// the constructive steps of large figures too: tidy choices, pilots,
+/// regrouping and tail rebuilds (BENCHMARKS, "3D: mid-size meshes").
+const LADDER_REACH: usize = 10;
+
 /// Attempts (fresh streams) at one descent step while it ends near misses.
 const DESCENT_ATTEMPTS: usize = 4;
 
@@ -129,15 +138,21 @@ pub fn solve_anytime_with(
         return Ok(congruent(&search, &whole, &s0));
     }
     let mut run = Run::new(&search, anytime, repair, s0.mismatch);
-    run.constructive();
+    let cells = figures[0].len();
+    run.constructive(cells >= coarse::MIN_CELLS);
+    // Figures the level search cannot reach the constructive count on
+    // take the large figures' constructive steps.
+    let scaled = cells >= coarse::MIN_CELLS || run.beyond_the_ladder();
+    if scaled && cells < coarse::MIN_CELLS && !search.stopped() {
+        run.constructive(true);
+    }
     // Figures of a few boxes (sums of cubes): boxes and bent slabs.
     if !search.stopped() {
         run.boxes();
     }
-    // Large figures: the level search is slow there, so the constructive
-    // step looks ahead (the pilot method).
-    let cells = figures[0].len();
-    if cells >= coarse::MIN_CELLS && !search.stopped() {
+    // Large figures (and those beyond the ladder): the level search is
+    // slow there, so the constructive step looks ahead (the pilot method).
+    if scaled && !search.stopped() {
         run.pilot();
     }
     // Figures that are mostly alike get their sectors early (they take a
@@ -145,15 +160,16 @@ pub fn solve_anytime_with(
     if !search.stopped() {
         run.sectors();
     }
-    if cells >= coarse::MIN_CELLS && !search.stopped() {
+    if scaled && !search.stopped() {
         run.pilots();
     }
-    // Large figures: the constructive step leaves small pieces that the
-    // level search rarely merges; regroup them exactly.
-    let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
-    if large && !search.stopped() {
+    // Large figures (and those beyond the ladder): the constructive step
+    // leaves small pieces that the level search rarely merges; regroup
+    // them exactly.
+    if scaled && !search.stopped() {
         run.regroup();
     }
+    let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
     // Large figures: the level search costs about the same per level at
     // any resolution, so it runs on the figures at half resolution (halved
     // again while they are large); the coarse dissection is lifted, refined
@@ -175,12 +191,13 @@ pub fn solve_anytime_with(
         }
         let fresh = search.fresh();
         let mut improved = run.round(round, large)?;
-        // Large figures: the level search there rarely beats a wider
-        // pilot, so every round also widens it (until its widest).
-        if large && !search.stopped() {
+        // Large figures (and those beyond the ladder): the level search
+        // there rarely beats a wider pilot, so every round also widens it
+        // (until its widest), and rebuilds the tail.
+        if scaled && !search.stopped() {
             improved |= run.pilot();
         }
-        if large && !search.stopped() {
+        if scaled && !search.stopped() {
             improved |= run.rebuild(REBUILD_BATCHES_PER_ROUND);
         }
         // Figures of a few boxes: the next, wider rung of the guillotine
@@ -190,7 +207,7 @@ pub fn solve_anytime_with(
         if !search.stopped() && run.boxes_hold_the_best() {
             improved |= run.box_rung();
         }
-        if improved && large && !search.stopped() {
+        if improved && scaled && !search.stopped() {
             let before = run.inc.pieces();
             run.regroup();
             improved |= run.inc.pieces() < before;
@@ -255,6 +272,8 @@ struct Run<'r, 'a> {
     /// How the pilot's greedy chooses motions (set by
     /// [`Run::constructive`]).
     pilot_choice: greedy::Choice,
+    /// The fewest pieces of each greedy choice the constructive step ran.
+    fewest: Vec<(greedy::Choice, usize)>,
     /// Constructive dissections with as many pieces as the best (the
     /// last [`TIES`]: the widest pilots'), for [`Run::regroup`].
     ties: Vec<Candidate>,
@@ -302,6 +321,7 @@ impl<'r, 'a> Run<'r, 'a> {
             pilot_width: PILOT_WIDTH,
             pilot_best: usize::MAX,
             pilot_choice: greedy::Choice::Connected,
+            fewest: Vec::new(),
             ties: Vec::new(),
             walk: None,
             rebuild_batch: 0,
@@ -312,26 +332,30 @@ impl<'r, 'a> Run<'r, 'a> {
     }
 
     /// The constructive dissection: every figure as the pivot, two ways of
-    /// choosing motions and two of keeping components (on large figures
-    /// also the tidy choices, [`greedy::TIDY_SLACKS`]); each one with fewer
-    /// pieces is an improvement. The pilot's choice is then the tidy or
-    /// connected choice whose greedy had the fewest pieces.
-    fn constructive(&mut self) {
+    /// choosing motions and two of keeping components (with `tidy`, also
+    /// the tidy choices, [`greedy::TIDY_SLACKS`]; a second call runs only
+    /// those); each one with fewer pieces is an improvement. The pilot's
+    /// choice is then the tidy or connected choice whose greedy had the
+    /// fewest pieces.
+    fn constructive(&mut self, tidy: bool) {
         let search = self.search;
-        let mut choices = vec![
-            (greedy::Choice::Overlap, 2),
-            (greedy::Choice::Overlap, 1),
-            (greedy::Choice::Connected, 2),
-            (greedy::Choice::Connected, 1),
-        ];
-        if search.figures[0].len() >= coarse::MIN_CELLS {
+        let mut choices = Vec::new();
+        if self.fewest.is_empty() {
+            choices = vec![
+                (greedy::Choice::Overlap, 2),
+                (greedy::Choice::Overlap, 1),
+                (greedy::Choice::Connected, 2),
+                (greedy::Choice::Connected, 1),
+            ];
+        }
+        if tidy {
             for slack in greedy::TIDY_SLACKS {
                 let choice = greedy::Choice::Tidy { slack };
                 choices.extend([(choice, 2), (choice, 1)]);
             }
         }
         // The fewest pieces of each choice, for the pilot's.
-        let mut fewest: Vec<(greedy::Choice, usize)> = Vec::new();
+        let mut fewest = std::mem::take(&mut self.fewest);
         'styles: for (choice, divisor) in choices {
             for pivot in 0..search.figures.len() {
                 if search.stopped() {
@@ -365,10 +389,17 @@ impl<'r, 'a> Run<'r, 'a> {
         // The fewest pieces; on ties tidy first (in the order of
         // TIDY_SLACKS, as they were run), then connected.
         self.pilot_choice = fewest
-            .into_iter()
+            .iter()
             .filter(|(c, _)| *c != greedy::Choice::Overlap)
-            .min_by_key(|&(c, k)| (k, c == greedy::Choice::Connected))
-            .map_or(greedy::Choice::Connected, |(c, _)| c);
+            .min_by_key(|&&(c, k)| (k, c == greedy::Choice::Connected))
+            .map_or(greedy::Choice::Connected, |&(c, _)| c);
+        self.fewest = fewest;
+    }
+
+    /// Whether the best count so far is out of the level search's reach
+    /// on a figure of this size ([`LADDER_REACH`]).
+    fn beyond_the_ladder(&self) -> bool {
+        self.inc.pieces().is_some_and(|k| k >= LADDER_REACH)
     }
 
     /// A constructive dissection (greedy or pilot, always valid) scored,

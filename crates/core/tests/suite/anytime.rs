@@ -86,6 +86,39 @@ fn four_cubic_figures_of_27_get_a_dissection_without_any_round() {
     assert!(improvements.iter().all(|i| i.1 == Via::Greedy));
 }
 
+/// A voxelized blob of 200 cubes into a 10×5×4 box (the repository's
+/// `blob200-to-box10x5x4`): under 300 cells, but its greedy's 18 pieces are
+/// out of the level search's reach, so the run takes the large figures'
+/// constructive steps (tidy choices, pilots, regrouping) before any round,
+/// and they cut the count by a third.
+#[test]
+fn a_mid_size_mesh_beyond_the_ladder_gets_the_large_figures_steps() {
+    let read = |text: &str| dissect_core::io::parse_figure(text, Cubic).expect("instance figure");
+    let figures = [
+        read(include_str!(
+            "../../../../instances/blob200-to-box10x5x4/a.txt"
+        )),
+        read(include_str!(
+            "../../../../instances/blob200-to-box10x5x4/b.txt"
+        )),
+    ];
+    assert!(figures.iter().all(|f| f.len() == 200));
+    let settings = Anytime {
+        idle_rounds: Some(0),
+        ..Anytime::default()
+    };
+    let (outcome, improvements) = anytime(&figures, &small(1, 2), &settings, None);
+    let n = verified(LatticeKind::Cubic, &figures, &outcome);
+    let greedy = improvements
+        .iter()
+        .filter(|i| i.1 == Via::Greedy)
+        .map(|i| i.0)
+        .max()
+        .expect("the greedy's count");
+    assert!(greedy >= 15, "the greedy alone: {greedy} pieces");
+    assert!(n <= 12, "{n} pieces: {improvements:?}");
+}
+
 /// On every lattice, with two and three figures: each improvement has fewer
 /// pieces than the one before, and the answer is the last one.
 #[test]
