@@ -63,7 +63,8 @@ const BOXES_EAGER_RUNGS: usize = 6;
 /// pieces at 25 s, against 19 from the greedy). Figures under
 /// [`coarse::MIN_CELLS`] whose greedy has at least this many pieces get
 /// the constructive steps of large figures too: tidy choices, pilots,
-/// regrouping and tail rebuilds (BENCHMARKS, "3D: mid-size meshes").
+/// regrouping and tail rebuilds (BENCHMARKS, "3D: mid-size meshes get the
+/// large figures' steps").
 const LADDER_REACH: usize = 10;
 
 /// Attempts (fresh streams) at one descent step while it ends near misses.
@@ -142,10 +143,16 @@ pub fn solve_anytime_with(
     run.constructive(cells >= coarse::MIN_CELLS);
     // Figures the level search cannot reach the constructive count on
     // take the large figures' constructive steps.
-    let scaled = cells >= coarse::MIN_CELLS || run.beyond_the_ladder();
-    if scaled && cells < coarse::MIN_CELLS && !search.stopped() {
+    let mid_size = cells < coarse::MIN_CELLS && run.beyond_the_ladder();
+    let scaled = cells >= coarse::MIN_CELLS || mid_size;
+    if mid_size && !search.stopped() {
         run.constructive(true);
     }
+    // Large figures that coarsen (and those beyond the ladder) regroup the
+    // tail and rebuild it every round; large figures on lattices that do
+    // not coarsen keep the paper's rounds.
+    let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
+    let tail = large || mid_size;
     // Figures of a few boxes (sums of cubes): boxes and bent slabs.
     if !search.stopped() {
         run.boxes();
@@ -166,10 +173,9 @@ pub fn solve_anytime_with(
     // Large figures (and those beyond the ladder): the constructive step
     // leaves small pieces that the level search rarely merges; regroup
     // them exactly.
-    if scaled && !search.stopped() {
+    if tail && !search.stopped() {
         run.regroup();
     }
-    let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
     // Large figures: the level search costs about the same per level at
     // any resolution, so it runs on the figures at half resolution (halved
     // again while they are large); the coarse dissection is lifted, refined
@@ -194,10 +200,10 @@ pub fn solve_anytime_with(
         // Large figures (and those beyond the ladder): the level search
         // there rarely beats a wider pilot, so every round also widens it
         // (until its widest), and rebuilds the tail.
-        if scaled && !search.stopped() {
+        if tail && !search.stopped() {
             improved |= run.pilot();
         }
-        if scaled && !search.stopped() {
+        if tail && !search.stopped() {
             improved |= run.rebuild(REBUILD_BATCHES_PER_ROUND);
         }
         // Figures of a few boxes: the next, wider rung of the guillotine
@@ -207,7 +213,7 @@ pub fn solve_anytime_with(
         if !search.stopped() && run.boxes_hold_the_best() {
             improved |= run.box_rung();
         }
-        if improved && scaled && !search.stopped() {
+        if improved && tail && !search.stopped() {
             let before = run.inc.pieces();
             run.regroup();
             improved |= run.inc.pieces() < before;
