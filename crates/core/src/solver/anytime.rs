@@ -153,6 +153,12 @@ pub fn solve_anytime_with(
     // not coarsen keep the paper's rounds.
     let large = cells >= coarse::MIN_CELLS && coarse::downsample(figures, coarse::FACTOR).is_some();
     let tail = large || mid_size;
+    // Mid-size voxel figures: a level of the ladder takes tens of seconds
+    // there, and the paper's ladder alone finds nothing below the greedy's
+    // count in minutes (BENCHMARKS, "3D: mid-size voxel figures only
+    // descend"), so their rounds only descend, as large figures' do, and
+    // the time goes to the pilots and rebuilds.
+    let descend_only = large || (mid_size && figures[0].lattice().lattice().dim() >= 3);
     // Figures of a few boxes (sums of cubes): boxes and bent slabs.
     if !search.stopped() {
         run.boxes();
@@ -196,7 +202,7 @@ pub fn solve_anytime_with(
             break;
         }
         let fresh = search.fresh();
-        let mut improved = run.round(round, large)?;
+        let mut improved = run.round(round, descend_only)?;
         // Large figures (and those beyond the ladder): the level search
         // there rarely beats a wider pilot, so every round also widens it
         // (until its widest), and rebuilds the tail.
@@ -852,10 +858,11 @@ impl<'r, 'a> Run<'r, 'a> {
     /// One round; whether it found fewer pieces. Round 0 of a small figure
     /// runs the paper's ladder first (its schedule reaches the fewest
     /// pieces there), then the descent from what it found; later rounds
-    /// descend first. Large figures only descend (their ladder ran on the
-    /// coarse figures). With the plateau, the walk ends the round.
-    fn round(&mut self, round: usize, large: bool) -> Result<bool, SolveError> {
-        let improved = if large {
+    /// descend first. With `descend_only` (large figures, whose ladder ran
+    /// on the coarse figures, and mid-size voxel figures beyond the ladder)
+    /// the round only descends. With the plateau, the walk ends the round.
+    fn round(&mut self, round: usize, descend_only: bool) -> Result<bool, SolveError> {
+        let improved = if descend_only {
             self.descend(round)?
         } else if round == 0 {
             let a = self.ladder(round)?;

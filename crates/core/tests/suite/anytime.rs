@@ -119,6 +119,63 @@ fn a_mid_size_mesh_beyond_the_ladder_gets_the_large_figures_steps() {
     assert!(n <= 12, "{n} pieces: {improvements:?}");
 }
 
+/// Records the piece count of every level that starts.
+#[derive(Default)]
+struct Levels(Mutex<Vec<usize>>);
+
+impl Observer for Levels {
+    fn on_event(&self, event: &Event) {
+        if let Event::LevelStarted { pieces, .. } = event {
+            self.0.lock().unwrap().push(*pieces);
+        }
+    }
+}
+
+/// The same mid-size voxel figures in rounds: the ladder from two pieces
+/// up is not run (on voxels its levels take tens of seconds), only the
+/// descent from the best count, and the answer stays valid.
+#[test]
+fn a_mid_size_mesh_beyond_the_ladder_only_descends() {
+    let read = |text: &str| dissect_core::io::parse_figure(text, Cubic).expect("instance figure");
+    let figures = [
+        read(include_str!(
+            "../../../../instances/blob200-to-box10x5x4/a.txt"
+        )),
+        read(include_str!(
+            "../../../../instances/blob200-to-box10x5x4/b.txt"
+        )),
+    ];
+    let settings = Anytime {
+        idle_rounds: Some(1),
+        max_rounds: Some(2),
+        ..Anytime::default()
+    };
+    let levels = Levels::default();
+    let outcome = solve_anytime(
+        &figures,
+        &small(1, 2),
+        &settings,
+        &AtomicBool::new(false),
+        &levels,
+        None,
+    )
+    .expect("solvable input");
+    let n = verified(LatticeKind::Cubic, &figures, &outcome);
+    let levels = levels.0.into_inner().unwrap();
+    assert!(
+        outcome.rounds >= 1,
+        "at least one round ran: {}",
+        outcome.rounds
+    );
+    // Level 0 (one piece: are the figures congruent?) always runs; the
+    // descent's levels are one piece under a count of 10 or more.
+    assert!(
+        levels.iter().all(|&p| p == 1 || p + 1 >= n),
+        "levels of {levels:?} pieces, answer {n}"
+    );
+    assert!(levels.iter().any(|&p| p > 1), "the descent ran: {levels:?}");
+}
+
 /// On every lattice, with two and three figures: each improvement has fewer
 /// pieces than the one before, and the answer is the last one.
 #[test]
