@@ -397,12 +397,7 @@ fn coverage_plane(
 
 /// Cells chosen from coverages: `(cells, threshold, changed)` or the count
 /// reached when `n` cannot be met.
-fn choose(
-    lattice: LatticeKind,
-    cov: &[(Cell, f64)],
-    n: Option<usize>,
-    threshold: f64,
-) -> Result<(Vec<Cell>, f64, usize), usize> {
+fn choose(lattice: LatticeKind, cov: &[(Cell, f64)], n: Option<usize>, threshold: f64) -> Chosen {
     let plain: Vec<Cell> = cov.iter().filter(|c| c.1 >= 0.5).map(|c| c.0).collect();
     if lattice == LatticeKind::Tri4 {
         return snap_tri4(cov, n, threshold, &plain);
@@ -415,7 +410,7 @@ fn choose(
                 .map(|c| c.0)
                 .collect();
             let changed = plain.len().abs_diff(cells.len());
-            Ok((cells, threshold, changed))
+            Ok((cells, threshold, changed, false))
         }
         Some(n) => {
             let mut v: Vec<&(Cell, f64)> = cov.iter().collect();
@@ -426,7 +421,16 @@ fn choose(
             let last_in = v[n - 1].1;
             let first_out = v.get(n).map_or(0.0, |c| c.1);
             if last_in <= first_out {
-                return Err(plain.len());
+                // Cells of equal coverage on both sides of the cut (fine
+                // samples are few per cell on large figures, so coverages
+                // repeat): no threshold gives n cells, but the tied cells
+                // can be told apart by how inked their neighbours are.
+                if last_in <= 0.0 {
+                    return Err(plain.len());
+                }
+                break_ties(lattice, cov, &mut v, last_in);
+                let cells: Vec<Cell> = v[..n].iter().map(|c| c.0).collect();
+                return Ok((cells, last_in, plain.len().abs_diff(n), true));
             }
             let t = if first_out < 0.5 && 0.5 <= last_in {
                 0.5
@@ -434,7 +438,7 @@ fn choose(
                 (last_in + first_out) / 2.0
             };
             let cells: Vec<Cell> = v[..n].iter().map(|c| c.0).collect();
-            Ok((cells, t, plain.len().abs_diff(n)))
+            Ok((cells, t, plain.len().abs_diff(n), false))
         }
     }
 }
@@ -459,12 +463,7 @@ const MASKS: [(u8, f64); 16] = [
     (10, 9.0),
 ];
 
-fn snap_tri4(
-    cov: &[(Cell, f64)],
-    n: Option<usize>,
-    threshold: f64,
-    plain: &[Cell],
-) -> Result<(Vec<Cell>, f64, usize), usize> {
+fn snap_tri4(cov: &[(Cell, f64)], n: Option<usize>, threshold: f64, plain: &[Cell]) -> Chosen {
     use std::collections::BTreeMap;
     let mut squares: BTreeMap<[i32; 2], [f64; 4]> = BTreeMap::new();
     for &(c, f) in cov {
@@ -544,12 +543,43 @@ fn snap_tri4(
     let plain: std::collections::HashSet<Cell> = plain.iter().copied().collect();
     let chosen: std::collections::HashSet<Cell> = cells.iter().copied().collect();
     let changed = plain.symmetric_difference(&chosen).count();
-    Ok((cells, threshold, changed))
+    Ok((cells, threshold, changed, false))
 }
 
-/// Cells chosen at one scale: `(cells, threshold, changed)`, or the count
-/// reached when the asked one cannot be met.
-type Chosen = Result<(Vec<Cell>, f64, usize), usize>;
+/// How a pick at one scale ranks: `(tied, changed, scale step)`, least first.
+type PickKey = (bool, usize, usize);
+
+/// Scales tried for a plain threshold after ties broken by neighbours gave
+/// the asked count with no cell changed from 50 %.
+const TIED_SCALES: usize = 20;
+
+/// Cells chosen at one scale: `(cells, threshold, changed, tied)` (`tied`:
+/// cells of the threshold's coverage were told apart by their neighbours,
+/// [`break_ties`]), or the count reached when the asked one cannot be met.
+type Chosen = Result<(Vec<Cell>, f64, usize, bool), usize>;
+
+/// Orders the cells of coverage `level` in `v` (sorted by coverage, most
+/// first, so they are contiguous) by the coverage of their neighbours,
+/// most first, then by cell: of two equally covered cells, the one
+/// deeper in the ink is filled first, so the boundary stays smooth
+/// instead of following the cells' order.
+fn break_ties(lattice: LatticeKind, cov: &[(Cell, f64)], v: &mut [&(Cell, f64)], level: f64) {
+    let of: std::collections::HashMap<Cell, f64> = cov.iter().copied().collect();
+    let lat = lattice.lattice();
+    let around = |c: Cell| -> f64 {
+        lat.neighbors(c)
+            .into_iter()
+            .map(|nb| of.get(&nb).copied().unwrap_or(0.0))
+            .sum()
+    };
+    let lo = v.partition_point(|c| c.1 > level);
+    let hi = v.partition_point(|c| c.1 >= level);
+    let mut keyed: Vec<(f64, &(Cell, f64))> = v[lo..hi].iter().map(|c| (around(c.0), *c)).collect();
+    keyed.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1 .0.cmp(&b.1 .0)));
+    for (slot, (_, c)) in v[lo..hi].iter_mut().zip(keyed) {
+        *slot = c;
+    }
+}
 
 /// Fails unless an asked cell count is from 1 to [`crate::bounds::MAX_GRID_CELLS`].
 pub(crate) fn check_cells(n: Option<usize>) -> Result<(), RenderError> {
@@ -623,7 +653,7 @@ pub(crate) fn sample(
                 "--scale must be > 0, got {scale}"
             )));
         }
-        let (cells, t, changed) = run(scale)?.map_err(|_| RenderError::EmptyPicture)?;
+        let (cells, t, changed, _) = run(scale)?.map_err(|_| RenderError::EmptyPicture)?;
         return finish(cells, scale, t, changed);
     };
     check_cells(Some(n))?;
@@ -641,10 +671,13 @@ pub(crate) fn sample(
     // Cells much smaller than a sample carry no information.
     let finest = if vol.z_scaled { 1.0 } else { 0.5 };
     if s0 < finest {
-        let nearest = run(finest)?.map_or_else(|c| c, |(cells, _, _)| cells.len());
+        let nearest = run(finest)?.map_or_else(|c| c, |(cells, ..)| cells.len());
         return Err(RenderError::Unreachable { asked: n, nearest });
     }
-    let mut best: Option<(usize, usize, Vec<Cell>, f64, f64)> = None;
+    // The best pick so far: a threshold that gives n cells is preferred to
+    // ties broken by neighbours ([`break_ties`]), then the fewest cells
+    // changed from 50 %, then the scale nearest s0.
+    let mut best: Option<(PickKey, Vec<Cell>, f64, f64)> = None;
     let mut nearest: Option<usize> = None;
     for k in 0..=120usize {
         // 0, +1, -1, +2, -2 ... steps of 0.5 %.
@@ -654,11 +687,14 @@ pub(crate) fn sample(
             continue;
         }
         match run(s)? {
-            Ok((cells, t, changed)) => {
-                if !matches!(&best, Some(b) if (changed, k) >= (b.0, b.1)) {
-                    best = Some((changed, k, cells, s, t));
+            Ok((cells, t, changed, tied)) => {
+                let key = (tied, changed, k);
+                if !matches!(&best, Some(b) if key >= b.0) {
+                    best = Some((key, cells, s, t));
                 }
-                if changed == 0 {
+                // Ties broken at the nearest scales are as good as any
+                // further away; a plain threshold is looked for a while.
+                if changed == 0 && (!tied || k >= TIED_SCALES) {
                     break;
                 }
             }
@@ -670,7 +706,7 @@ pub(crate) fn sample(
         }
     }
     match best {
-        Some((changed, _, cells, s, t)) => finish(cells, s, t, changed),
+        Some(((_, changed, _), cells, s, t)) => finish(cells, s, t, changed),
         None => Err(RenderError::Unreachable {
             asked: n,
             nearest: nearest.unwrap_or(0),

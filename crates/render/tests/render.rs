@@ -605,6 +605,25 @@ fn box_stl(lo: [f64; 3], hi: [f64; 3]) -> Vec<u8> {
 }
 
 #[test]
+fn voxelize_hits_counts_that_no_threshold_gives() {
+    // A cube's face cells are covered alike, so between 27 and 64 cells no
+    // threshold gives the count: ties are broken by the neighbours' ink.
+    let stl = box_stl([0.0, 0.0, 0.0], [3.0, 3.0, 3.0]);
+    for n in [30, 40, 50] {
+        let r = voxelize(
+            &stl,
+            &VoxelOptions {
+                cells: Some(n),
+                scale: None,
+            },
+        )
+        .unwrap();
+        assert_eq!(r.figure.len(), n);
+        assert_eq!(r.text.matches('#').count(), n);
+    }
+}
+
+#[test]
 fn voxelize_a_cube_mesh_gives_the_cube() {
     let stl = box_stl([-1.5, 2.0, 0.0], [1.5, 5.0, 3.0]);
     let r = voxelize(
