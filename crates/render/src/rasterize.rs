@@ -3,7 +3,10 @@
 //! (one `cubic` z layer each) is sampled onto the lattice. Asked for an
 //! exact cell count, it searches the scale (picture pixels per cell) and the
 //! threshold (how much of a cell must be inside) that give exactly that
-//! many cells with the fewest cells changed from a plain 50 % threshold.
+//! many cells with the fewest cells changed from a plain 50 % threshold;
+//! where every scale's cut falls among equally covered cells (large
+//! figures: few samples per cell), those are told apart by their
+//! neighbours' coverage.
 //!
 //! `tri4` snaps every square to empty, full or a half square cut along a
 //! diagonal (so outlines run along 45° edges), using a single or three
@@ -395,8 +398,8 @@ fn coverage_plane(
     out
 }
 
-/// Cells chosen from coverages: `(cells, threshold, changed)` or the count
-/// reached when `n` cannot be met.
+/// Cells chosen from coverages ([`Chosen`]): the `n` most covered, ties at
+/// the cut broken by [`break_ties`].
 fn choose(lattice: LatticeKind, cov: &[(Cell, f64)], n: Option<usize>, threshold: f64) -> Chosen {
     let plain: Vec<Cell> = cov.iter().filter(|c| c.1 >= 0.5).map(|c| c.0).collect();
     if lattice == LatticeKind::Tri4 {
