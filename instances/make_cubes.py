@@ -6,6 +6,7 @@ layer format (one block of rows per layer, blank lines between layers):
 
     python3 make_cubes.py OUTDIR 1 6 8 9     # 1^3 + 6^3 + 8^3 = 9^3
 """
+import argparse
 import os
 import sys
 
@@ -21,8 +22,11 @@ def layers(width, depth, height, filled):
 
 
 def main():
-    outdir, *sides = sys.argv[1:]
-    sides = [int(s) for s in sides]
+    parser = argparse.ArgumentParser(description="Write cubes apart on one floor (a.txt) and the last cube (b.txt).")
+    parser.add_argument("outdir")
+    parser.add_argument("sides", type=int, nargs="+", help="the cubes' sides, the whole cube last")
+    args = parser.parse_args()
+    outdir, sides = args.outdir, args.sides
     parts, whole = sides[:-1], sides[-1]
     if sum(s ** 3 for s in parts) != whole ** 3:
         sys.exit("the cubes' volumes do not add up to the last cube's")

@@ -5,8 +5,8 @@ voxelized-mesh instances (then `dissect voxelize --cells N`):
     python3 make_meshes.py pawn /tmp/pawn.stl   # a chess pawn (a surface of revolution)
     python3 make_meshes.py blob /tmp/blob.stl   # a lumpy star-shaped body r(u, v)
 """
+import argparse
 import math
-import sys
 
 NU, NV = 64, 48
 
@@ -46,7 +46,11 @@ def normal(a, b, c):
 
 
 def main():
-    kind, out = sys.argv[1], sys.argv[2]
+    parser = argparse.ArgumentParser(description="Write a mesh of the instances as ASCII STL.")
+    parser.add_argument("kind", choices=["pawn", "blob"])
+    parser.add_argument("out", help="the STL file to write")
+    args = parser.parse_args()
+    kind, out = args.kind, args.out
     point = {"pawn": pawn, "blob": blob}[kind]
     # pawn: j runs bottom to top, so (i, j) -> (i+1, j) -> (i+1, j+1) faces
     # outward; blob: j runs top to bottom, the opposite turn.

@@ -6,8 +6,8 @@ the instance torus512-to-slab16x8x4:
     python3 make_torus.py /tmp/torus.stl
     dissect voxelize --cells 512 -o torus512-to-slab16x8x4/a.txt /tmp/torus.stl
 """
+import argparse
 import math
-import sys
 
 R, r, NU, NV = 3.0, 1.25, 48, 24
 
@@ -28,7 +28,9 @@ def normal(a, b, c):
 
 
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "torus.stl"
+    parser = argparse.ArgumentParser(description="Write the torus mesh as ASCII STL.")
+    parser.add_argument("out", nargs="?", default="torus.stl", help="the STL file to write")
+    out = parser.parse_args().out
     lines = ["solid torus"]
     for i in range(NU):
         for j in range(NV):
