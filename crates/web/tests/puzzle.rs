@@ -379,9 +379,13 @@ async fn bad_and_impossible_constraints_get_clear_4xx() {
         let m = v["error"]["message"].as_str().unwrap();
         assert!(m.contains(want), "{extra}: {m}");
     }
-    // The checkerboard: not on a lattice without one (hex: three hexagons
-    // meet at a corner); impossible when the
-    // figures' colours differ.
+}
+
+#[tokio::test]
+async fn a_checkerboard_that_cannot_hold_gets_a_clear_4xx() {
+    let app = app();
+    // Not on a lattice without one (hex: three hexagons meet at a corner);
+    // impossible when the figures' colours differ.
     let hex = json!({"lattice": "hex", "checkerboard": true,
         "figures": [{"cells": [[0, 0], [1, 0]]}, {"cells": [[0, 0], [1, 0]]}]});
     let (s, v) = call(&app, "POST", "/api/solve", &hex.to_string()).await;
