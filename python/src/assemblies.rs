@@ -1,18 +1,18 @@
 //! `Dissection.assemblies`: in how many ways the pieces tile each figure,
-//! counted by the engine ([`Verified::assemblies`], the count of `dissect
-//! assemblies`), without the GIL and stopped by Ctrl-C.
+//! counted by the engine
+//! ([`Verified::assemblies`](dissect_engine::Verified::assemblies), the
+//! count of `dissect assemblies`), without the GIL and stopped by Ctrl-C.
 
 use std::sync::atomic::AtomicBool;
 use std::time::Duration;
 
-use dissect_engine::Verified;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
 use crate::errors::{error, Kind};
 use crate::figure::PyFigure;
 use crate::run::watched;
-use crate::solve::dissection_from_py;
+use crate::solve::verified_from_py;
 
 /// Counts the tilings of each figure by the dissection's pieces; a dict
 /// per figure (`figure`, `tilings`, `up_to_symmetry`,
@@ -37,21 +37,7 @@ pub(crate) fn assemblies<'py>(
         .duration()
         .unwrap_or(Duration::MAX);
     let figs: Vec<_> = figures.iter().map(|f| f.figure.clone()).collect();
-    let d = dissection_from_py(py, lattice, mirror, names.clone(), &pieces)?;
-    let verified = Verified::new(
-        d.lattice(),
-        d.mirror(),
-        names.clone(),
-        &figs,
-        d.pieces().to_vec(),
-    )
-    .map_err(|e| {
-        error(
-            py,
-            Kind::InvalidSolution,
-            format!("not a valid dissection: {e}"),
-        )
-    })?;
+    let verified = verified_from_py(py, &figs, lattice, mirror, names.clone(), &pieces)?;
     let stop = AtomicBool::new(false);
     let run = watched(py, &stop, None, || {
         verified.assemblies(&figs, time, Some(&stop))

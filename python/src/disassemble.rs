@@ -1,17 +1,18 @@
 //! `Dissection.disassemble`: a plan of straight moves that takes each
-//! figure apart, by the engine ([`Verified::disassemble`], the search of
-//! `dissect disassemble`), without the GIL and stopped by Ctrl-C.
+//! figure apart, by the engine
+//! ([`Verified::disassemble`](dissect_engine::Verified::disassemble), the
+//! search of `dissect disassemble`), without the GIL and stopped by Ctrl-C.
 
 use std::sync::atomic::AtomicBool;
 
-use dissect_engine::{Disassembly, Verified};
+use dissect_engine::Disassembly;
 use dissect_puzzle::disassembly::{outcome_line, plan_json};
 use pyo3::prelude::*;
 
 use crate::errors::{error, Kind};
 use crate::figure::PyFigure;
 use crate::run::watched;
-use crate::solve::dissection_from_py;
+use crate::solve::verified_from_py;
 
 /// Takes every figure of the dissection apart; returns the plan file's text
 /// (`dissection-disassembly/1`, what `dissect disassemble -o` writes) and
@@ -31,21 +32,7 @@ pub(crate) fn disassemble<'py>(
 ) -> PyResult<(String, Vec<String>)> {
     let time = crate::run::time_limit(time_limit).map_err(|m| error(py, Kind::Option, m))?;
     let figs: Vec<_> = figures.iter().map(|f| f.figure.clone()).collect();
-    let d = dissection_from_py(py, lattice, mirror, names.clone(), &pieces)?;
-    let verified = Verified::new(
-        d.lattice(),
-        d.mirror(),
-        names.clone(),
-        &figs,
-        d.pieces().to_vec(),
-    )
-    .map_err(|e| {
-        error(
-            py,
-            Kind::InvalidSolution,
-            format!("not a valid dissection: {e}"),
-        )
-    })?;
+    let verified = verified_from_py(py, &figs, lattice, mirror, names.clone(), &pieces)?;
     let stop = AtomicBool::new(false);
     let run = watched(py, &stop, None, || verified.disassemble(time, Some(&stop)))?;
     let outcomes = run
@@ -58,5 +45,5 @@ pub(crate) fn disassemble<'py>(
         .collect();
     let named: Vec<(&str, &Disassembly)> =
         names.iter().map(String::as_str).zip(&outcomes).collect();
-    Ok((plan_json(d.lattice(), &named), lines))
+    Ok((plan_json(verified.dissection().lattice(), &named), lines))
 }

@@ -742,3 +742,24 @@ pub(crate) fn dissection_from_py(
     Dissection::new(kind, mirror, names, pieces)
         .map_err(|e| error(py, Kind::InvalidSolution, e.to_string()))
 }
+
+/// A dissection given from Python, checked against `figures`: the
+/// engine's [`Verified`], or `InvalidSolution` naming what is wrong.
+pub(crate) fn verified_from_py(
+    py: Python<'_>,
+    figures: &[Figure],
+    lattice: &str,
+    mirror: bool,
+    names: Vec<String>,
+    pieces: &[Vec<Vec<Vec<i64>>>],
+) -> PyResult<dissect_engine::Verified> {
+    let d = dissection_from_py(py, lattice, mirror, names.clone(), pieces)?;
+    dissect_engine::Verified::new(d.lattice(), d.mirror(), names, figures, d.pieces().to_vec())
+        .map_err(|e| {
+            error(
+                py,
+                Kind::InvalidSolution,
+                format!("not a valid dissection: {e}"),
+            )
+        })
+}
