@@ -131,6 +131,22 @@ impl Job {
     fn finished(&self) -> bool {
         self.tx.borrow().state != State::Running
     }
+
+    /// Ends the job (a solve or an enumeration) with its outcome: the
+    /// result or the error, the optimal mark and the time it took.
+    fn finish(&self, state: State, result: Option<Value>, error: Option<String>) {
+        let elapsed = self.started.elapsed().as_secs_f64();
+        self.tx.send_modify(|s| {
+            if let Some(r) = &result {
+                s.optimal = r["optimal"] == Value::Bool(true);
+            }
+            s.state = state;
+            s.counting = false;
+            s.result = result;
+            s.error = error;
+            s.elapsed = elapsed;
+        });
+    }
 }
 
 impl EngineObserver for Job {
@@ -378,17 +394,7 @@ fn spawn(job: Arc<Job>, request: Request, permit: OwnedSemaphorePermit) {
             ),
         };
         drop(permit);
-        let elapsed = job.started.elapsed().as_secs_f64();
-        job.tx.send_modify(|s| {
-            if let Some(r) = &result {
-                s.optimal = r["optimal"] == Value::Bool(true);
-            }
-            s.state = state;
-            s.counting = false;
-            s.result = result;
-            s.error = error;
-            s.elapsed = elapsed;
-        });
+        job.finish(state, result, error);
     });
 }
 
@@ -421,16 +427,7 @@ fn spawn_enumeration(job: Arc<Job>, request: Request, permit: OwnedSemaphorePerm
             ),
         };
         drop(permit);
-        let elapsed = job.started.elapsed().as_secs_f64();
-        job.tx.send_modify(|s| {
-            if let Some(r) = &result {
-                s.optimal = r["optimal"] == Value::Bool(true);
-            }
-            s.state = state;
-            s.result = result;
-            s.error = error;
-            s.elapsed = elapsed;
-        });
+        job.finish(state, result, error);
     });
 }
 
