@@ -7,7 +7,7 @@
 use std::sync::atomic::AtomicBool;
 
 use crate::figure::Figure;
-use crate::lattice::Symmetry;
+use crate::lattice::{Point, Symmetry};
 use crate::solver::candidate::{Candidate, Score};
 use crate::solver::explore::Executor;
 use crate::solver::incumbent::Incumbent;
@@ -66,6 +66,15 @@ const BOXES_EAGER_RUNGS: usize = 6;
 /// regrouping and tail rebuilds (BENCHMARKS, "3D: mid-size meshes get the
 /// large figures' steps").
 const LADDER_REACH: usize = 10;
+
+/// How far (in lattice translations along one axis) a displaced start
+/// moves the first piece off the largest common part ([`Run::displaced`]):
+/// on a 2,000-voxel blob into a 20×10×10 box, 4 along the box's first axis
+/// cut the first two pieces as 997 + 549 voxels instead of 1,413 + 150
+/// and led to 40 pieces where every undisplaced seed ended at 42-44
+/// (BENCHMARKS, "A lead: a first piece placed a few voxels off the
+/// largest overlap").
+const DISPLACEMENT: i32 = 4;
 
 /// Attempts (fresh streams) at one descent step while it ends near misses.
 const DESCENT_ATTEMPTS: usize = 4;
@@ -173,6 +182,12 @@ pub fn solve_anytime_with(
     if !search.stopped() {
         run.sectors();
     }
+    // Large voxel figures that are not a few boxes (meshes): a displaced
+    // start beside the undisplaced one, another basin for the rebuilds.
+    let voxels = figures[0].lattice().lattice().dim() >= 3;
+    if cells >= coarse::MIN_CELLS && voxels && !run.boxes_hold_the_best() {
+        run.displaced();
+    }
     if scaled && !search.stopped() {
         run.pilots();
     }
@@ -242,6 +257,40 @@ fn boxes_of(figures: &[Figure], syms: &[Symmetry]) -> Option<guillotine::Boxes> 
     guillotine::Boxes::new([figures[0].cells(), figures[1].cells()], syms)
 }
 
+/// The displacement of a displaced start's first motion: [`DISPLACEMENT`]
+/// lattice translations along the axis on which the figures reach
+/// farthest (their extent in blocks, the first axis on ties: the length
+/// of a box they go into). The greedy's largest common part leaves a
+/// remainder that the later steps cut into small pieces; a first piece a
+/// few cells off it leaves a second large part beside it, another basin
+/// for the rebuilds.
+pub(crate) fn displacement(figures: &[Figure]) -> Point {
+    let Some(first) = figures.first() else {
+        return Point::ORIGIN;
+    };
+    let lattice = first.lattice().lattice();
+    let extent = |axis: usize| {
+        figures
+            .iter()
+            .map(|f| {
+                let coords = f.cells().iter().map(|&c| lattice.block(c)[axis]);
+                let (lo, hi) =
+                    coords.fold((i32::MAX, i32::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)));
+                hi.saturating_sub(lo)
+            })
+            .max()
+            .unwrap_or(0)
+    };
+    // The first axis of the largest extent.
+    let axis = (0..lattice.dim())
+        .rev()
+        .max_by_key(|&a| extent(a))
+        .unwrap_or(0);
+    let mut d = [0; 3];
+    d[axis] = DISPLACEMENT * lattice.modulus();
+    Point::from(d)
+}
+
 /// The figures are congruent: one piece, found at level 0.
 fn congruent(search: &Search<'_>, whole: &Candidate, s0: &Score) -> Outcome {
     let found = search.found(whole, s0, 0);
@@ -277,20 +326,14 @@ struct Run<'r, 'a> {
     below: usize,
     /// The best dissection so far and the outcome.
     inc: Incumbent,
-    /// The width of the next pilot ([`Run::pilot`]).
-    pilot_width: usize,
-    /// The fewest pieces any pilot found ([`Run::pilot`]).
-    pilot_best: usize,
-    /// How the pilot's greedy chooses motions (set by
-    /// [`Run::constructive`]).
-    pilot_choice: greedy::Choice,
-    /// The fewest pieces of each greedy choice the constructive step ran.
-    fewest: Vec<(greedy::Choice, usize)>,
+    /// The constructive steps' state: the undisplaced one while the
+    /// other waits ([`Run::pilots`]).
+    lane: Lane,
+    /// A displaced start's lane, for [`Run::pilots`] (`None`: none).
+    displaced: Option<Lane>,
     /// Constructive dissections with as many pieces as the best (the
     /// last [`TIES`]: the widest pilots'), for [`Run::regroup`].
     ties: Vec<Candidate>,
-    /// Where the tail rebuilds' walk stands ([`Run::rebuild`]).
-    walk: Option<Candidate>,
     /// Batches of rebuilds so far (each draws its own streams).
     rebuild_batch: usize,
     /// The figures as boxes, when they are two figures of a few boxes on
@@ -300,6 +343,53 @@ struct Run<'r, 'a> {
     box_rung: usize,
     /// The fewest pieces any rung found.
     boxes_best: usize,
+}
+
+/// The state of one start of the constructive steps: its pilots, the greedy
+/// choices it ran, and its walk of tail rebuilds. A run has the
+/// undisplaced lane and, on large voxel figures, a displaced one
+/// ([`Run::pilots`]).
+struct Lane {
+    /// The width of the next pilot ([`Run::pilot`]).
+    pilot_width: usize,
+    /// The fewest pieces any pilot found ([`Run::pilot`]).
+    pilot_best: usize,
+    /// How the pilot's greedy chooses motions (set by
+    /// [`Run::constructive`]).
+    pilot_choice: greedy::Choice,
+    /// The fewest pieces of each greedy choice the constructive step ran.
+    fewest: Vec<(greedy::Choice, usize)>,
+    /// Where the tail rebuilds' walk stands ([`Run::rebuild`]).
+    walk: Option<Candidate>,
+    /// Added to the first motion of every constructive step
+    /// ([`greedy::GreedyStyle::start`]; [`Point::ORIGIN`]: the
+    /// undisplaced lane).
+    start: Point,
+    /// A displaced lane's fewest-piece dissection: its rebuilds walk from
+    /// there rather than from the run's best, which lies in another basin
+    /// (`None` in the undisplaced lane).
+    basin: Option<Candidate>,
+}
+
+impl Lane {
+    /// A lane before its first step, its first motions displaced by
+    /// `start`.
+    fn new(start: Point) -> Lane {
+        Lane {
+            pilot_width: PILOT_WIDTH,
+            pilot_best: usize::MAX,
+            pilot_choice: greedy::Choice::Connected,
+            fewest: Vec::new(),
+            walk: None,
+            start,
+            basin: None,
+        }
+    }
+
+    /// Whether this lane's first motions are displaced.
+    fn is_displaced(&self) -> bool {
+        self.start != Point::ORIGIN
+    }
 }
 
 impl<'r, 'a> Run<'r, 'a> {
@@ -330,12 +420,9 @@ impl<'r, 'a> Run<'r, 'a> {
             // The plateau (several solutions) searches at the best count too.
             below: usize::from(!anytime.plateau),
             inc: Incumbent::new(outcome, max_pieces),
-            pilot_width: PILOT_WIDTH,
-            pilot_best: usize::MAX,
-            pilot_choice: greedy::Choice::Connected,
-            fewest: Vec::new(),
+            lane: Lane::new(Point::ORIGIN),
+            displaced: None,
             ties: Vec::new(),
-            walk: None,
             rebuild_batch: 0,
             boxes: boxes_of(figures, &search.problem.geo.syms),
             box_rung: 0,
@@ -352,7 +439,7 @@ impl<'r, 'a> Run<'r, 'a> {
     fn constructive(&mut self, tidy: bool) {
         let search = self.search;
         let mut choices = Vec::new();
-        if self.fewest.is_empty() {
+        if self.lane.fewest.is_empty() {
             choices = vec![
                 (greedy::Choice::Overlap, 2),
                 (greedy::Choice::Overlap, 1),
@@ -367,7 +454,7 @@ impl<'r, 'a> Run<'r, 'a> {
             }
         }
         // The fewest pieces of each choice, for the pilot's.
-        let mut fewest = std::mem::take(&mut self.fewest);
+        let mut fewest = std::mem::take(&mut self.lane.fewest);
         'styles: for (choice, divisor) in choices {
             for pivot in 0..search.figures.len() {
                 if search.stopped() {
@@ -377,6 +464,7 @@ impl<'r, 'a> Run<'r, 'a> {
                     pivot,
                     divisor,
                     choice,
+                    start: self.lane.start,
                 };
                 // The first dissection is always finished; later ones stop
                 // with the run.
@@ -400,12 +488,12 @@ impl<'r, 'a> Run<'r, 'a> {
         }
         // The fewest pieces; on ties tidy first (in the order of
         // TIDY_SLACKS, as they were run), then connected.
-        self.pilot_choice = fewest
+        self.lane.pilot_choice = fewest
             .iter()
             .filter(|(c, _)| *c != greedy::Choice::Overlap)
             .min_by_key(|&&(c, k)| (k, c == greedy::Choice::Connected))
             .map_or(greedy::Choice::Connected, |&(c, _)| c);
-        self.fewest = fewest;
+        self.lane.fewest = fewest;
     }
 
     /// Whether the best count so far is out of the level search's reach
@@ -429,6 +517,7 @@ impl<'r, 'a> Run<'r, 'a> {
         if !score.valid {
             return false;
         }
+        self.keep_in_basin(&cand);
         let level = cand.k - 1;
         let best = self.inc.pieces();
         if best == Some(cand.k) {
@@ -445,6 +534,14 @@ impl<'r, 'a> Run<'r, 'a> {
         improved
     }
 
+    /// While a displaced start runs, `cand` as its basin's best when it
+    /// has fewer pieces than that.
+    fn keep_in_basin(&mut self, cand: &Candidate) {
+        if self.lane.is_displaced() && self.lane.basin.as_ref().is_none_or(|b| cand.k < b.k) {
+            self.lane.basin = Some(cand.clone());
+        }
+    }
+
     /// The pilot method on the greedy ([`greedy::pilot_until`]) at the
     /// current width, which then doubles: the constructive step's pilot
     /// choice, then (past the first width) the connected choice when that
@@ -455,15 +552,15 @@ impl<'r, 'a> Run<'r, 'a> {
     /// ranks (a wider one would repeat it). Stops with the run.
     fn pilot(&mut self) -> bool {
         let search = self.search;
-        let width = self.pilot_width;
+        let width = self.lane.pilot_width;
         if width > PILOT_MAX_WIDTH {
             return false;
         }
         let mut improved = false;
         let mut truncated = false;
         // The first pilot (before the sectors) runs one choice only.
-        let mut choices = vec![self.pilot_choice];
-        if self.pilot_choice != greedy::Choice::Connected && width > PILOT_WIDTH {
+        let mut choices = vec![self.lane.pilot_choice];
+        if self.lane.pilot_choice != greedy::Choice::Connected && width > PILOT_WIDTH {
             choices.push(greedy::Choice::Connected);
         }
         let styles = choices
@@ -478,6 +575,7 @@ impl<'r, 'a> Run<'r, 'a> {
                     pivot,
                     divisor,
                     choice,
+                    start: self.lane.start,
                 };
                 let found = search.install(|| {
                     greedy::pilot_until(&search.problem, style, width, PILOT_DEPTH, search.stop)
@@ -486,11 +584,11 @@ impl<'r, 'a> Run<'r, 'a> {
                     break 'styles;
                 };
                 truncated |= more;
-                self.pilot_best = self.pilot_best.min(cand.k);
+                self.lane.pilot_best = self.lane.pilot_best.min(cand.k);
                 improved |= self.offer_greedy(cand);
             }
         }
-        self.pilot_width = if truncated { width * 2 } else { usize::MAX };
+        self.lane.pilot_width = if truncated { width * 2 } else { usize::MAX };
         improved
     }
 
@@ -501,19 +599,58 @@ impl<'r, 'a> Run<'r, 'a> {
     /// here does not hang on what the rebuilds between them found (on
     /// 7-14-17 a lucky rebuild used to end them before the width that
     /// found the fewest pieces).
+    ///
+    /// With a displaced lane ([`Run::displaced`]) the two lanes share the
+    /// time: the lane whose next pilot is narrower goes first (the
+    /// undisplaced one on ties), each with its own rule; the displaced one
+    /// first runs its constructive steps. The undisplaced lane is the
+    /// run's again afterwards.
     fn pilots(&mut self) {
-        let mut progress = true;
-        while !self.search.stopped()
-            && self.pilot_width <= PILOT_MAX_WIDTH
-            && (self.pilot_width <= PILOT_EAGER_WIDTH || progress)
-        {
-            let width = self.pilot_width;
-            let before = self.pilot_best;
-            self.pilot();
-            progress = self.pilot_best < before;
-            // Rebuilds in proportion to the pilot's work.
-            self.rebuild(width / PILOT_WIDTH);
+        // [undisplaced, displaced]: whether a lane goes on, and whether
+        // its last pilot found fewer pieces than its narrower ones.
+        let mut open = [true, self.displaced.is_some()];
+        let mut progress = [true, true];
+        while !self.search.stopped() {
+            let width = |i: usize, run: &Run| match i {
+                0 => run.lane.pilot_width,
+                _ => run.displaced.as_ref().map_or(usize::MAX, |l| l.pilot_width),
+            };
+            let Some(i) = (0..2).filter(|&i| open[i]).min_by_key(|&i| width(i, self)) else {
+                break;
+            };
+            if i == 1 {
+                self.switch_lanes();
+                if self.lane.fewest.is_empty() {
+                    self.constructive(true);
+                }
+            }
+            let width = self.lane.pilot_width;
+            if width > PILOT_MAX_WIDTH || (width > PILOT_EAGER_WIDTH && !progress[i]) {
+                open[i] = false;
+            } else {
+                let before = self.lane.pilot_best;
+                self.pilot();
+                progress[i] = self.lane.pilot_best < before;
+                // Rebuilds in proportion to the pilot's work.
+                self.rebuild(width / PILOT_WIDTH);
+            }
+            if i == 1 {
+                self.switch_lanes();
+            }
         }
+    }
+
+    /// The undisplaced lane and the displaced one trade places.
+    fn switch_lanes(&mut self) {
+        if let Some(other) = self.displaced.as_mut() {
+            std::mem::swap(&mut self.lane, other);
+        }
+    }
+
+    /// A displaced lane for [`Run::pilots`], its first motion moved by
+    /// [`displacement`].
+    fn displaced(&mut self) {
+        self.displaced = Some(Lane::new(displacement(self.search.figures)));
     }
 
     /// The sector dissection ([`sectors`]): the large common piece with
@@ -688,16 +825,18 @@ impl<'r, 'a> Run<'r, 'a> {
                 return improved;
             };
             let best_k = best.k;
-            let from = match self.walk.take() {
-                Some(w) if w.k <= best_k => w,
-                _ => best.clone(),
+            // A displaced start's walk stays in its own basin.
+            let anchor = self.lane.basin.as_ref().unwrap_or(best);
+            let from = match self.lane.walk.take() {
+                Some(w) if w.k <= anchor.k => w,
+                _ => anchor.clone(),
             };
             let batch = self.rebuild_batch;
             let mut rng = super::stream(search.options.seed, batch, super::REBUILD, i % REBUILDS);
             let most = (from.k / 2).max(1);
             let keep = rng.random_range(1..=most);
             let choices = [
-                self.pilot_choice,
+                self.lane.pilot_choice,
                 greedy::Choice::Connected,
                 greedy::Choice::Tidy { slack: 3 },
                 greedy::Choice::Tidy { slack: 4 },
@@ -707,6 +846,7 @@ impl<'r, 'a> Run<'r, 'a> {
                 pivot: rng.random_range(0..search.figures.len()),
                 divisor: rng.random_range(1..=2),
                 choice: choices[rng.random_range(0..choices.len())],
+                start: Point::ORIGIN,
             };
             let found = search.install(|| {
                 greedy::rebuild_until(
@@ -722,8 +862,10 @@ impl<'r, 'a> Run<'r, 'a> {
             };
             if cand.k < best_k {
                 improved |= self.offer(cand.clone(), Via::Rebuild);
+            } else {
+                self.keep_in_basin(&cand);
             }
-            self.walk = Some(if cand.k <= from.k { cand } else { from });
+            self.lane.walk = Some(if cand.k <= from.k { cand } else { from });
         }
         improved
     }

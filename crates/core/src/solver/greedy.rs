@@ -26,6 +26,12 @@ pub(crate) struct GreedyStyle {
     pub(crate) divisor: usize,
     /// How each step's motion is chosen.
     pub(crate) choice: Choice,
+    /// Added to the translation of the first step's motion of the first
+    /// other figure ([`Point::ORIGIN`]: the paper's greedy): a displaced
+    /// start, whose first piece lies off the largest common part and
+    /// leaves another large part beside it (the anytime search's
+    /// displaced starts). Ignored where the displaced motion keeps no cell.
+    pub(crate) start: Point,
 }
 
 /// How a greedy step chooses the motion of a figure onto the pivot.
@@ -243,12 +249,14 @@ impl<'p> State<'p> {
     fn step(&mut self, forced: Option<(usize, (usize, Point))>) {
         let (problem, pivot) = (self.problem, self.pivot);
         let shapes = &problem.shapes;
+        // The first step may be displaced.
+        let start = (self.k == 0 && self.style.start != Point::ORIGIN).then_some(self.style.start);
         let (common, motions) = common_part_with(
             problem,
             pivot,
             &self.labels,
             (self.style.choice, self.style.divisor),
-            forced,
+            (forced, start),
         );
         debug_assert!(!common.is_empty(), "a single cell always fits");
         let comps = components(&shapes[pivot], &common);
@@ -296,17 +304,23 @@ pub(crate) fn common_part_by(
     labels: &[Vec<u16>],
     choice: Choice,
 ) -> (Vec<u32>, Vec<Option<(usize, Point)>>) {
-    common_part_with(problem, pivot, labels, (choice, 1), None)
+    common_part_with(problem, pivot, labels, (choice, 1), (None, None))
 }
 
+/// A figure's motion imposed on a greedy step: the figure, then its motion
+/// (symmetry index, translation).
+type Forced = (usize, (usize, Point));
+
 /// [`common_part_by`] (with the style's divisor for [`Choice::Tidy`]),
-/// figure `forced.0` moved by `forced.1` when given.
+/// figure `forced.0` moved by `forced.1` when given; the first other
+/// figure's translation displaced by `start` when given and the displaced
+/// motion keeps a cell.
 fn common_part_with(
     problem: &Problem,
     pivot: usize,
     labels: &[Vec<u16>],
     choice: (Choice, usize),
-    forced: Option<(usize, (usize, Point))>,
+    (forced, start): (Option<Forced>, Option<Point>),
 ) -> (Vec<u32>, Vec<Option<(usize, Point)>>) {
     let shapes = &problem.shapes;
     let nf = shapes.len();
@@ -314,18 +328,31 @@ fn common_part_with(
         .filter(|&c| labels[pivot][c as usize] == FREE)
         .collect();
     let mut motions: Vec<Option<(usize, Point)>> = vec![None; nf];
+    let first_other = (0..nf).find(|&f| f != pivot);
     for f in (0..nf).filter(|&f| f != pivot) {
         let (s, t) = match forced {
             Some((g, m)) if g == f => m,
             _ => best_motion(problem, pivot, &common, f, &labels[f], choice),
         };
-        let sym = problem.geo.syms[s];
-        common.retain(|&c| {
-            let p = sym.apply(shapes[pivot].point(c));
-            shapes[f]
-                .lookup(p + t)
-                .is_some_and(|j| labels[f][j as usize] == FREE)
-        });
+        let kept = |t: Point| -> Vec<u32> {
+            let sym = problem.geo.syms[s];
+            common
+                .iter()
+                .copied()
+                .filter(|&c| {
+                    let p = sym.apply(shapes[pivot].point(c));
+                    shapes[f]
+                        .lookup(p + t)
+                        .is_some_and(|j| labels[f][j as usize] == FREE)
+                })
+                .collect()
+        };
+        let displaced = start
+            .filter(|_| Some(f) == first_other)
+            .map(|d| (t + d, kept(t + d)))
+            .filter(|(_, cells)| !cells.is_empty());
+        let (t, cells) = displaced.unwrap_or_else(|| (t, kept(t)));
+        common = cells;
         motions[f] = Some((s, t));
     }
     (common, motions)

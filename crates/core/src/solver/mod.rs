@@ -12,7 +12,7 @@
 //! (the paper's schedule), `anytime` (the anytime rounds), `plateau`
 //! (several solutions), `incumbent` (keep-best).
 
-mod anytime;
+pub(crate) mod anytime;
 pub(crate) mod candidate;
 pub(crate) mod coarse;
 pub(crate) mod distance;

@@ -3,14 +3,15 @@
 use std::sync::atomic::AtomicBool;
 use std::sync::Mutex;
 
-use crate::lattice::{Cell, LatticeKind};
+use crate::lattice::{Cell, LatticeKind, Point};
 use crate::solver::candidate::{Candidate, Score};
 use crate::solver::greedy::{greedy, Choice, GreedyStyle};
 use crate::solver::{Level, Options, Repair, Search};
 use crate::tests::util::{candidate, cells_by_label, verified};
 
 /// Every style of the constructive dissection is valid, on every lattice,
-/// with two and three figures, whatever the pivot.
+/// with two and three figures, whatever the pivot, with the first motion
+/// displaced by one lattice translation or not.
 #[test]
 fn the_constructive_dissection_is_always_valid() {
     use LatticeKind::*;
@@ -42,17 +43,21 @@ fn the_constructive_dissection_is_always_valid() {
                     Choice::Tidy { slack: 4 },
                     Choice::Tidy { slack: 1 },
                 ] {
-                    let style = GreedyStyle {
-                        pivot,
-                        divisor,
-                        choice,
-                    };
-                    let cand = greedy(&problem, style);
-                    assert!(
-                        verified(*lattice, true, &figs, &cand),
-                        "{lattice} {figures:?} {style:?}: {:?}",
-                        cells_by_label(&figs, &cand)
-                    );
+                    let step = lattice.lattice().modulus();
+                    for start in [Point::ORIGIN, Point::from([step, 0, 0])] {
+                        let style = GreedyStyle {
+                            pivot,
+                            divisor,
+                            choice,
+                            start,
+                        };
+                        let cand = greedy(&problem, style);
+                        assert!(
+                            verified(*lattice, true, &figs, &cand),
+                            "{lattice} {figures:?} {style:?}: {:?}",
+                            cells_by_label(&figs, &cand)
+                        );
+                    }
                 }
             }
         }
@@ -70,6 +75,7 @@ fn the_constructive_dissection_keeps_common_parts_whole() {
             pivot: 0,
             divisor: 1,
             choice: Choice::Overlap,
+            start: Point::ORIGIN,
         },
     );
     assert_eq!(cand.k, 1);
@@ -85,10 +91,72 @@ fn the_constructive_dissection_keeps_common_parts_whole() {
             pivot: 0,
             divisor: 1,
             choice: Choice::Overlap,
+            start: Point::ORIGIN,
         },
     );
     assert_eq!(cand.k, 2, "two 4×2 halves");
     assert!(verified(LatticeKind::Square, true, &figs, &cand));
+}
+
+/// A displaced start moves the first piece off the largest common part:
+/// two congruent figures are one piece undisplaced, and with the first
+/// motion shifted by one cell the first piece is smaller and the cut takes
+/// more pieces, still a valid dissection. A displacement that keeps no
+/// cell is ignored.
+#[test]
+fn a_displaced_start_moves_the_first_piece() {
+    let (figs, problem, _) = candidate(LatticeKind::Square, true, &["AAA|AAA", "AA|AA|AA"]);
+    let style = |start| GreedyStyle {
+        pivot: 0,
+        divisor: 1,
+        choice: Choice::Overlap,
+        start,
+    };
+    let plain = greedy(&problem, style(Point::ORIGIN));
+    assert_eq!(plain.k, 1);
+    let first = |cand: &Candidate| cand.labels[0].iter().filter(|&&l| l == 0).count();
+    for d in [[1, 0, 0], [0, 1, 0], [-1, 0, 0]] {
+        let shifted = greedy(&problem, style(Point::from(d)));
+        assert!(verified(LatticeKind::Square, true, &figs, &shifted));
+        assert!(
+            first(&shifted) < 6,
+            "{d:?}: {:?}",
+            cells_by_label(&figs, &shifted)
+        );
+        assert!(shifted.k > 1);
+    }
+    let nowhere = greedy(&problem, style(Point::from([100, 0, 0])));
+    assert_eq!(
+        nowhere.labels, plain.labels,
+        "a displacement off the figure is ignored"
+    );
+}
+
+/// A displaced start moves along the axis on which the figures reach
+/// farthest, by four lattice translations: the length of a 20×10×10 box, a
+/// tower's height, the first axis on ties.
+#[test]
+fn a_displaced_start_moves_along_the_longest_axis() {
+    use crate::figure::Figure;
+    use crate::solver::anytime::displacement;
+    let boxed = |x: i32, y: i32, z: i32| {
+        let mut cells = Vec::new();
+        for i in 0..x {
+            for j in 0..y {
+                for k in 0..z {
+                    cells.push([i, j, k]);
+                }
+            }
+        }
+        Figure::new(LatticeKind::Cubic, cells).expect("a box")
+    };
+    let d = |figs: &[Figure]| <[i32; 3]>::from(displacement(figs));
+    assert_eq!(d(&[boxed(20, 10, 10), boxed(10, 20, 10)]), [4, 0, 0]);
+    assert_eq!(d(&[boxed(5, 4, 10), boxed(10, 4, 5)]), [4, 0, 0]);
+    assert_eq!(d(&[boxed(3, 4, 12), boxed(6, 6, 4)]), [0, 0, 4]);
+    assert_eq!(d(&[boxed(2, 6, 2), boxed(4, 3, 2)]), [0, 4, 0]);
+    assert_eq!(d(&[boxed(4, 4, 4)]), [4, 0, 0]);
+    assert_eq!(d(&[]), [0, 0, 0]);
 }
 
 /// The connected choice takes the motion whose common part has the largest
@@ -185,6 +253,7 @@ fn the_tidy_choice_leaves_no_more_remainder_parts() {
                     pivot,
                     divisor: 1,
                     choice,
+                    start: Point::ORIGIN,
                 };
                 let plain = greedy(&problem, style);
                 assert!(verified(LatticeKind::Cubic, true, &figs, &plain));
@@ -220,6 +289,7 @@ fn the_pilot_is_valid_and_never_worse_than_its_greedy() {
                 pivot: 0,
                 divisor,
                 choice: Choice::Connected,
+                start: Point::ORIGIN,
             };
             let plain = greedy(&problem, style);
             let (pilot, _) = pilot_until(&problem, style, 3, 4, &AtomicBool::new(false)).unwrap();
@@ -245,6 +315,7 @@ fn the_pilot_is_valid_and_never_worse_than_its_greedy() {
         pivot: 0,
         divisor: 1,
         choice: Choice::Connected,
+        start: Point::ORIGIN,
     };
     assert!(pilot_until(&problem, style, 2, 2, &AtomicBool::new(true)).is_none());
 }
@@ -353,6 +424,7 @@ fn the_tail_rebuild_keeps_the_largest_pieces_and_stays_valid() {
                 pivot,
                 divisor: 2,
                 choice: Choice::Connected,
+                start: Point::ORIGIN,
             };
             let base = greedy(&problem, style);
             // The base's pieces by size in the pivot, largest first.

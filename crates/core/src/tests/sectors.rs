@@ -4,7 +4,7 @@
 use std::sync::atomic::AtomicBool;
 
 use crate::figure::Figure;
-use crate::lattice::{Cell, LatticeKind};
+use crate::lattice::{Cell, LatticeKind, Point};
 use crate::solver::candidate::Problem;
 use crate::solver::greedy::{greedy, Choice, GreedyStyle};
 use crate::solver::sectors::{dissect, plans, Plan};
@@ -153,6 +153,7 @@ impl Repair for Constructive {
                 pivot: 0,
                 divisor: 1,
                 choice: Choice::Overlap,
+                start: Point::ORIGIN,
             },
         );
         Some(cells_by_label(&figs, &cand))
