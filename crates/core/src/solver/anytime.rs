@@ -76,6 +76,13 @@ const LADDER_REACH: usize = 10;
 /// largest overlap").
 const DISPLACEMENT: i32 = 4;
 
+/// Displaced starts a large voxel run takes beside the undisplaced one,
+/// along this many of the axes the figures reach farthest on
+/// ([`displacements`]): the second one found the torus's 17 and the
+/// blob's 41 on the seed where one lane alone stayed at 18 and 44
+/// (BENCHMARKS, "3D: displaced starts on the meshes").
+const DISPLACED_LANES: usize = 2;
+
 /// Attempts (fresh streams) at one descent step while it ends near misses.
 const DESCENT_ATTEMPTS: usize = 4;
 
@@ -182,8 +189,8 @@ pub fn solve_anytime_with(
     if !search.stopped() {
         run.sectors();
     }
-    // Large voxel figures that are not a few boxes (meshes): a displaced
-    // start beside the undisplaced one, another basin for the rebuilds.
+    // Large voxel figures that are not a few boxes (meshes): displaced
+    // starts beside the undisplaced one, other basins for the rebuilds.
     let voxels = figures[0].lattice().lattice().dim() >= 3;
     if cells >= coarse::MIN_CELLS && voxels && !run.boxes_hold_the_best() {
         run.displaced();
@@ -257,16 +264,17 @@ fn boxes_of(figures: &[Figure], syms: &[Symmetry]) -> Option<guillotine::Boxes> 
     guillotine::Boxes::new([figures[0].cells(), figures[1].cells()], syms)
 }
 
-/// The displacement of a displaced start's first motion: [`DISPLACEMENT`]
-/// lattice translations along the axis on which the figures reach
-/// farthest (their extent in blocks, the first axis on ties: the length
-/// of a box they go into). The greedy's largest common part leaves a
+/// The displacements of the displaced starts' first motions:
+/// [`DISPLACEMENT`] lattice translations along each of the
+/// [`DISPLACED_LANES`] axes on which the figures reach farthest (their
+/// extent in blocks, the longest first, the first axis on ties: the length
+/// of a box they go into first). The greedy's largest common part leaves a
 /// remainder that the later steps cut into small pieces; a first piece a
 /// few cells off it leaves a second large part beside it, another basin
 /// for the rebuilds.
-pub(crate) fn displacement(figures: &[Figure]) -> Point {
+pub(crate) fn displacements(figures: &[Figure]) -> Vec<Point> {
     let Some(first) = figures.first() else {
-        return Point::ORIGIN;
+        return Vec::new();
     };
     let lattice = first.lattice().lattice();
     let extent = |axis: usize| {
@@ -281,14 +289,17 @@ pub(crate) fn displacement(figures: &[Figure]) -> Point {
             .max()
             .unwrap_or(0)
     };
-    // The first axis of the largest extent.
-    let axis = (0..lattice.dim())
-        .rev()
-        .max_by_key(|&a| extent(a))
-        .unwrap_or(0);
-    let mut d = [0; 3];
-    d[axis] = DISPLACEMENT * lattice.modulus();
-    Point::from(d)
+    let mut axes: Vec<usize> = (0..lattice.dim()).collect();
+    // Stable: the first axis first on ties.
+    axes.sort_by_key(|&a| std::cmp::Reverse(extent(a)));
+    axes.into_iter()
+        .take(DISPLACED_LANES)
+        .map(|axis| {
+            let mut d = [0; 3];
+            d[axis] = DISPLACEMENT * lattice.modulus();
+            Point::from(d)
+        })
+        .collect()
 }
 
 /// The figures are congruent: one piece, found at level 0.
@@ -327,10 +338,11 @@ struct Run<'r, 'a> {
     /// The best dissection so far and the outcome.
     inc: Incumbent,
     /// The constructive steps' state: the undisplaced one while the
-    /// other waits ([`Run::pilots`]).
+    /// others wait ([`Run::pilots`]).
     lane: Lane,
-    /// A displaced start's lane, for [`Run::pilots`] (`None`: none).
-    displaced: Option<Lane>,
+    /// The displaced starts' lanes, for [`Run::pilots`] (none but on
+    /// large voxel figures).
+    displaced: Vec<Lane>,
     /// Constructive dissections with as many pieces as the best (the
     /// last [`TIES`]: the widest pilots'), for [`Run::regroup`].
     ties: Vec<Candidate>,
@@ -347,7 +359,7 @@ struct Run<'r, 'a> {
 
 /// The state of one start of the constructive steps: its pilots, the greedy
 /// choices it ran, and its walk of tail rebuilds. A run has the
-/// undisplaced lane and, on large voxel figures, a displaced one
+/// undisplaced lane and, on large voxel figures, displaced ones
 /// ([`Run::pilots`]).
 struct Lane {
     /// The width of the next pilot ([`Run::pilot`]).
@@ -421,7 +433,7 @@ impl<'r, 'a> Run<'r, 'a> {
             below: usize::from(!anytime.plateau),
             inc: Incumbent::new(outcome, max_pieces),
             lane: Lane::new(Point::ORIGIN),
-            displaced: None,
+            displaced: Vec::new(),
             ties: Vec::new(),
             rebuild_batch: 0,
             boxes: boxes_of(figures, &search.problem.geo.syms),
@@ -600,29 +612,29 @@ impl<'r, 'a> Run<'r, 'a> {
     /// 7-14-17 a lucky rebuild used to end them before the width that
     /// found the fewest pieces).
     ///
-    /// With a displaced lane ([`Run::displaced`]) the two lanes share the
-    /// time: the lane whose next pilot is narrower goes first (the
-    /// undisplaced one on ties), each with its own rule; the displaced one
-    /// first runs its constructive steps. The undisplaced lane is the
-    /// run's again afterwards.
+    /// With displaced lanes ([`Run::displaced`]) the lanes share the
+    /// time: the lane whose next pilot is narrowest goes first (the
+    /// undisplaced one, then the displaced ones in order, on ties), each
+    /// with its own rule; a displaced one first runs its constructive
+    /// steps. The undisplaced lane is the run's again afterwards.
     fn pilots(&mut self) {
-        // [undisplaced, displaced]: whether a lane goes on, and whether
-        // its last pilot found fewer pieces than its narrower ones.
-        let mut open = [true, self.displaced.is_some()];
-        let mut progress = [true, true];
+        // Lane 0 is the undisplaced one, lane i the displaced i - 1:
+        // whether a lane goes on, and whether its last pilot found fewer
+        // pieces than its narrower ones.
+        let lanes = 1 + self.displaced.len();
+        let mut open = vec![true; lanes];
+        let mut progress = vec![true; lanes];
         while !self.search.stopped() {
-            let width = |i: usize, run: &Run| match i {
-                0 => run.lane.pilot_width,
-                _ => run.displaced.as_ref().map_or(usize::MAX, |l| l.pilot_width),
+            let width = |i: usize| match i {
+                0 => self.lane.pilot_width,
+                _ => self.displaced[i - 1].pilot_width,
             };
-            let Some(i) = (0..2).filter(|&i| open[i]).min_by_key(|&i| width(i, self)) else {
+            let Some(i) = (0..lanes).filter(|&i| open[i]).min_by_key(|&i| width(i)) else {
                 break;
             };
-            if i == 1 {
-                self.switch_lanes();
-                if self.lane.fewest.is_empty() {
-                    self.constructive(true);
-                }
+            self.switch_lanes(i);
+            if i > 0 && self.lane.fewest.is_empty() {
+                self.constructive(true);
             }
             let width = self.lane.pilot_width;
             if width > PILOT_MAX_WIDTH || (width > PILOT_EAGER_WIDTH && !progress[i]) {
@@ -634,23 +646,25 @@ impl<'r, 'a> Run<'r, 'a> {
                 // Rebuilds in proportion to the pilot's work.
                 self.rebuild(width / PILOT_WIDTH);
             }
-            if i == 1 {
-                self.switch_lanes();
-            }
+            self.switch_lanes(i);
         }
     }
 
-    /// The undisplaced lane and the displaced one trade places.
-    fn switch_lanes(&mut self) {
-        if let Some(other) = self.displaced.as_mut() {
+    /// Lane `i` of [`Run::pilots`] (0: the undisplaced one, which stays)
+    /// and the undisplaced lane trade places; twice puts them back.
+    fn switch_lanes(&mut self, i: usize) {
+        if let Some(other) = i.checked_sub(1).and_then(|d| self.displaced.get_mut(d)) {
             std::mem::swap(&mut self.lane, other);
         }
     }
 
-    /// A displaced lane for [`Run::pilots`], its first motion moved by
-    /// [`displacement`].
+    /// The displaced lanes for [`Run::pilots`], their first motions moved
+    /// by [`displacements`].
     fn displaced(&mut self) {
-        self.displaced = Some(Lane::new(displacement(self.search.figures)));
+        self.displaced = displacements(self.search.figures)
+            .into_iter()
+            .map(Lane::new)
+            .collect();
     }
 
     /// The sector dissection ([`sectors`]): the large common piece with

@@ -132,13 +132,13 @@ fn a_displaced_start_moves_the_first_piece() {
     );
 }
 
-/// A displaced start moves along the axis on which the figures reach
-/// farthest, by four lattice translations: the length of a 20×10×10 box, a
-/// tower's height, the first axis on ties.
+/// Displaced starts move along the two axes on which the figures reach
+/// farthest, the longest first, by four lattice translations: the length
+/// of a 20×10×10 box, a tower's height, the first axis on ties.
 #[test]
-fn a_displaced_start_moves_along_the_longest_axis() {
+fn displaced_starts_move_along_the_longest_axes() {
     use crate::figure::Figure;
-    use crate::solver::anytime::displacement;
+    use crate::solver::anytime::displacements;
     let boxed = |x: i32, y: i32, z: i32| {
         let mut cells = Vec::new();
         for i in 0..x {
@@ -150,13 +150,20 @@ fn a_displaced_start_moves_along_the_longest_axis() {
         }
         Figure::new(LatticeKind::Cubic, cells).expect("a box")
     };
-    let d = |figs: &[Figure]| <[i32; 3]>::from(displacement(figs));
-    assert_eq!(d(&[boxed(20, 10, 10), boxed(10, 20, 10)]), [4, 0, 0]);
-    assert_eq!(d(&[boxed(5, 4, 10), boxed(10, 4, 5)]), [4, 0, 0]);
-    assert_eq!(d(&[boxed(3, 4, 12), boxed(6, 6, 4)]), [0, 0, 4]);
-    assert_eq!(d(&[boxed(2, 6, 2), boxed(4, 3, 2)]), [0, 4, 0]);
-    assert_eq!(d(&[boxed(4, 4, 4)]), [4, 0, 0]);
-    assert_eq!(d(&[]), [0, 0, 0]);
+    let d = |figs: &[Figure]| -> Vec<[i32; 3]> {
+        displacements(figs)
+            .into_iter()
+            .map(<[i32; 3]>::from)
+            .collect()
+    };
+    let (x, y, z) = ([4, 0, 0], [0, 4, 0], [0, 0, 4]);
+    assert_eq!(d(&[boxed(20, 10, 10), boxed(10, 20, 10)]), [x, y]);
+    assert_eq!(d(&[boxed(20, 8, 10), boxed(10, 8, 20)]), [x, z]);
+    assert_eq!(d(&[boxed(5, 4, 10), boxed(10, 4, 5)]), [x, z]);
+    assert_eq!(d(&[boxed(3, 4, 12), boxed(6, 6, 4)]), [z, x]);
+    assert_eq!(d(&[boxed(2, 6, 2), boxed(4, 3, 2)]), [y, x]);
+    assert_eq!(d(&[boxed(4, 4, 4)]), [x, y]);
+    assert!(d(&[]).is_empty());
 }
 
 /// The connected choice takes the motion whose common part has the largest
