@@ -110,8 +110,9 @@ impl Figure {
         components_of(self.lattice, &self.cells)
     }
 
-    /// Cell count, components, holes and bounding box.
-    pub fn stats(&self) -> FigureStats {
+    /// The bounding box in blocks ([`Lattice::block`](crate::lattice::Lattice::block)):
+    /// the smallest and the largest block coordinates.
+    pub fn bounds(&self) -> ([i32; 3], [i32; 3]) {
         let l = self.lattice.lattice();
         let mut min = [i32::MAX; 3];
         let mut max = [i32::MIN; 3];
@@ -122,6 +123,12 @@ impl Figure {
                 max[i] = max[i].max(b[i]);
             }
         }
+        (min, max)
+    }
+
+    /// Cell count, components, holes and bounding box.
+    pub fn stats(&self) -> FigureStats {
+        let (min, max) = self.bounds();
         FigureStats {
             cells: self.cells.len(),
             components: self.components().len(),

@@ -277,21 +277,15 @@ pub(crate) fn displacements(figures: &[Figure]) -> Vec<Point> {
         return Vec::new();
     };
     let lattice = first.lattice().lattice();
-    let extent = |axis: usize| {
-        figures
-            .iter()
-            .map(|f| {
-                let coords = f.cells().iter().map(|&c| lattice.block(c)[axis]);
-                let (lo, hi) =
-                    coords.fold((i32::MAX, i32::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)));
-                hi.saturating_sub(lo)
-            })
-            .max()
-            .unwrap_or(0)
-    };
+    let mut extent = [0; 3];
+    for (lo, hi) in figures.iter().map(Figure::bounds) {
+        for axis in 0..3 {
+            extent[axis] = extent[axis].max(hi[axis].saturating_sub(lo[axis]));
+        }
+    }
     let mut axes: Vec<usize> = (0..lattice.dim()).collect();
     // Stable: the first axis first on ties.
-    axes.sort_by_key(|&a| std::cmp::Reverse(extent(a)));
+    axes.sort_by_key(|&a| std::cmp::Reverse(extent[a]));
     axes.into_iter()
         .take(DISPLACED_LANES)
         .map(|axis| {

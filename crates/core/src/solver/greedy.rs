@@ -334,25 +334,39 @@ fn common_part_with(
             Some((g, m)) if g == f => m,
             _ => best_motion(problem, pivot, &common, f, &labels[f], choice),
         };
-        let kept = |t: Point| -> Vec<u32> {
-            let sym = problem.geo.syms[s];
-            common
-                .iter()
-                .copied()
-                .filter(|&c| {
-                    let p = sym.apply(shapes[pivot].point(c));
-                    shapes[f]
-                        .lookup(p + t)
-                        .is_some_and(|j| labels[f][j as usize] == FREE)
-                })
-                .collect()
+        let sym = problem.geo.syms[s];
+        let keeps = |t: Point, c: u32| {
+            let p = sym.apply(shapes[pivot].point(c));
+            shapes[f]
+                .lookup(p + t)
+                .is_some_and(|j| labels[f][j as usize] == FREE)
         };
+        // A displaced first motion, when it keeps a cell; the chosen one
+        // otherwise (in place: every greedy step comes here).
         let displaced = start
             .filter(|_| Some(f) == first_other)
-            .map(|d| (t + d, kept(t + d)))
+            .map(|d| t + d)
+            .map(|t| {
+                (
+                    t,
+                    common
+                        .iter()
+                        .copied()
+                        .filter(|&c| keeps(t, c))
+                        .collect::<Vec<u32>>(),
+                )
+            })
             .filter(|(_, cells)| !cells.is_empty());
-        let (t, cells) = displaced.unwrap_or_else(|| (t, kept(t)));
-        common = cells;
+        let t = match displaced {
+            Some((t, cells)) => {
+                common = cells;
+                t
+            }
+            None => {
+                common.retain(|&c| keeps(t, c));
+                t
+            }
+        };
         motions[f] = Some((s, t));
     }
     (common, motions)
