@@ -21,17 +21,17 @@ const CLIMB: usize = 2;
 
 /// Motions the pilot method tries at each step it looks ahead, the first
 /// time; each later pilot doubles it ([`Run::pilot`]).
-const PILOT_WIDTH: usize = 4;
+pub(crate) const PILOT_WIDTH: usize = 4;
 
 /// The widest pilot.
-const PILOT_MAX_WIDTH: usize = 256;
+pub(crate) const PILOT_MAX_WIDTH: usize = 256;
 
 /// Pilots up to this width run before the level search whatever they
 /// find; a wider one runs there only while the last one improved. On
 /// voxel figures the pilot finds what the level search does not
 /// (BENCHMARKS, "3D at scale"), and a width that finds nothing is often
 /// followed by one that does.
-const PILOT_EAGER_WIDTH: usize = 32;
+pub(crate) const PILOT_EAGER_WIDTH: usize = 32;
 
 /// Steps the pilot method looks ahead at (the first ones: they cut the
 /// largest pieces).
@@ -377,6 +377,54 @@ struct Lane {
     basin: Option<Candidate>,
 }
 
+/// The order in which [`Run::pilots`] runs its lanes' pilots: the open
+/// lane whose next pilot is narrowest goes first, the lowest index on
+/// ties (lane 0, the undisplaced one, then the displaced ones in order).
+/// A lane closes once its next pilot is past [`PILOT_MAX_WIDTH`], or past
+/// [`PILOT_EAGER_WIDTH`] when its last pilot found no fewer pieces than
+/// its narrower ones did. Test: `lanes_take_turns_narrowest_first`.
+#[derive(Debug)]
+pub(crate) struct Schedule {
+    /// Whether each lane goes on.
+    open: Vec<bool>,
+    /// Whether each lane's last pilot found fewer pieces than its
+    /// narrower ones (`true` before the first).
+    progress: Vec<bool>,
+}
+
+impl Schedule {
+    /// `lanes` lanes, all open.
+    pub(crate) fn new(lanes: usize) -> Schedule {
+        Schedule {
+            open: vec![true; lanes],
+            progress: vec![true; lanes],
+        }
+    }
+
+    /// The lane to run next, given each lane's next pilot width; `None`
+    /// once every lane is closed.
+    pub(crate) fn next(&self, widths: &[usize]) -> Option<usize> {
+        // `min_by_key` keeps the first of equal keys.
+        (0..self.open.len())
+            .filter(|&i| self.open[i])
+            .min_by_key(|&i| widths.get(i).copied().unwrap_or(usize::MAX))
+    }
+
+    /// Whether lane `i` runs its next pilot, `width` wide; closes it if
+    /// not.
+    pub(crate) fn runs(&mut self, i: usize, width: usize) -> bool {
+        let runs = width <= PILOT_MAX_WIDTH && (width <= PILOT_EAGER_WIDTH || self.progress[i]);
+        self.open[i] &= runs;
+        runs
+    }
+
+    /// Whether lane `i`'s pilot just found fewer pieces than its narrower
+    /// ones.
+    pub(crate) fn record(&mut self, i: usize, progress: bool) {
+        self.progress[i] = progress;
+    }
+}
+
 impl Lane {
     /// A lane before its first step, its first motions displaced by
     /// `start`.
@@ -612,18 +660,14 @@ impl<'r, 'a> Run<'r, 'a> {
     /// with its own rule; a displaced one first runs its constructive
     /// steps. The undisplaced lane is the run's again afterwards.
     fn pilots(&mut self) {
-        // Lane 0 is the undisplaced one, lane i the displaced i - 1:
-        // whether a lane goes on, and whether its last pilot found fewer
-        // pieces than its narrower ones.
-        let lanes = 1 + self.displaced.len();
-        let mut open = vec![true; lanes];
-        let mut progress = vec![true; lanes];
+        let mut schedule = Schedule::new(1 + self.displaced.len());
         while !self.search.stopped() {
-            let width = |i: usize| match i {
-                0 => self.lane.pilot_width,
-                _ => self.displaced[i - 1].pilot_width,
-            };
-            let Some(i) = (0..lanes).filter(|&i| open[i]).min_by_key(|&i| width(i)) else {
+            // Lane 0 is the undisplaced one, lane i the displaced i - 1.
+            let widths: Vec<usize> = std::iter::once(&self.lane)
+                .chain(&self.displaced)
+                .map(|lane| lane.pilot_width)
+                .collect();
+            let Some(i) = schedule.next(&widths) else {
                 break;
             };
             self.switch_lanes(i);
@@ -631,12 +675,10 @@ impl<'r, 'a> Run<'r, 'a> {
                 self.constructive(true);
             }
             let width = self.lane.pilot_width;
-            if width > PILOT_MAX_WIDTH || (width > PILOT_EAGER_WIDTH && !progress[i]) {
-                open[i] = false;
-            } else {
+            if schedule.runs(i, width) {
                 let before = self.lane.pilot_best;
                 self.pilot();
-                progress[i] = self.lane.pilot_best < before;
+                schedule.record(i, self.lane.pilot_best < before);
                 // Rebuilds in proportion to the pilot's work.
                 self.rebuild(width / PILOT_WIDTH);
             }

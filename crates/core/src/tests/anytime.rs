@@ -508,3 +508,51 @@ fn top_votes_are_the_sorted_best() {
         }
     }
 }
+
+/// The lanes of the pilots take turns, the narrowest next pilot first and
+/// the lower lane on ties; a lane stops past the widest pilot, past the
+/// eager widths once its pilots stop finding fewer pieces, and at once
+/// when a pilot took every motion (its next width is unbounded).
+#[test]
+fn lanes_take_turns_narrowest_first() {
+    use crate::solver::anytime::{Schedule, PILOT_EAGER_WIDTH, PILOT_MAX_WIDTH, PILOT_WIDTH};
+    assert_eq!(
+        (PILOT_WIDTH, PILOT_EAGER_WIDTH, PILOT_MAX_WIDTH),
+        (4, 32, 256)
+    );
+    // Lane 1 finds no fewer pieces from width 16 on; lane 2's 8-wide pilot
+    // takes every motion.
+    let mut widths = vec![PILOT_WIDTH; 3];
+    let mut schedule = Schedule::new(3);
+    let mut ran = Vec::new();
+    while let Some(i) = schedule.next(&widths) {
+        let width = widths[i];
+        if schedule.runs(i, width) {
+            ran.push((i, width));
+            schedule.record(i, !(i == 1 && width >= 16));
+            widths[i] = if i == 2 && width == 8 {
+                usize::MAX
+            } else {
+                width * 2
+            };
+        }
+    }
+    let expected = [
+        (0, 4),
+        (1, 4),
+        (2, 4),
+        (0, 8),
+        (1, 8),
+        (2, 8),
+        (0, 16),
+        (1, 16),
+        (0, 32),
+        (1, 32),
+        (0, 64),
+        (0, 128),
+        (0, 256),
+    ];
+    assert_eq!(ran, expected);
+    // A lane whose width is unknown (past the slice) counts as unbounded.
+    assert_eq!(Schedule::new(2).next(&[8]), Some(0));
+}
