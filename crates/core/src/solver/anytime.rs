@@ -401,13 +401,14 @@ impl Schedule {
         }
     }
 
-    /// The lane to run next, given each lane's next pilot width; `None`
-    /// once every lane is closed.
+    /// The lane to run next, given each lane's next pilot width (one per
+    /// lane); `None` once every lane is closed.
     pub(crate) fn next(&self, widths: &[usize]) -> Option<usize> {
+        debug_assert_eq!(widths.len(), self.open.len(), "a width per lane");
         // `min_by_key` keeps the first of equal keys.
         (0..self.open.len())
             .filter(|&i| self.open[i])
-            .min_by_key(|&i| widths.get(i).copied().unwrap_or(usize::MAX))
+            .min_by_key(|&i| widths[i])
     }
 
     /// Whether lane `i` runs its next pilot, `width` wide; closes it if

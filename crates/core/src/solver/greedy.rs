@@ -343,29 +343,20 @@ fn common_part_with(
         };
         // A displaced first motion, when it keeps a cell; the chosen one
         // otherwise (in place: every greedy step comes here).
-        let displaced = start
-            .filter(|_| Some(f) == first_other)
-            .map(|d| t + d)
-            .map(|t| {
-                (
-                    t,
-                    common
-                        .iter()
-                        .copied()
-                        .filter(|&c| keeps(t, c))
-                        .collect::<Vec<u32>>(),
-                )
-            })
-            .filter(|(_, cells)| !cells.is_empty());
-        let t = match displaced {
-            Some((t, cells)) => {
-                common = cells;
-                t
-            }
-            None => {
-                common.retain(|&c| keeps(t, c));
-                t
-            }
+        let displaced = start.filter(|_| Some(f) == first_other).and_then(|d| {
+            let cells: Vec<u32> = common
+                .iter()
+                .copied()
+                .filter(|&c| keeps(t + d, c))
+                .collect();
+            (!cells.is_empty()).then_some((t + d, cells))
+        });
+        let t = if let Some((displaced_t, cells)) = displaced {
+            common = cells;
+            displaced_t
+        } else {
+            common.retain(|&c| keeps(t, c));
+            t
         };
         motions[f] = Some((s, t));
     }
