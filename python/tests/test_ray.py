@@ -112,9 +112,14 @@ def test_distributed_search_gives_the_local_answer(
         assert 1 <= b.tasks <= 2 and b.tasks <= b.explorations
         assert b.workers and os.getpid() not in b.workers
     assert {(b.round, b.level) for b in batches}
-    assert spread.history and [(h["pieces"], h["by"]) for h in spread.history] == [
-        (h["pieces"], h["by"]) for h in local.history
-    ]
+    assert spread.history and spread.history[-1]["pieces"] == spread.pieces
+    if options.get("prove", True) is False:
+        # Without the exact side beside it the search alone records each
+        # count, in the same order; with it, which side records a count
+        # first is a race (on a loaded machine SAT found the 4 first).
+        assert [(h["pieces"], h["by"]) for h in spread.history] == [
+            (h["pieces"], h["by"]) for h in local.history
+        ]
     # (The lower bound is the exact side's progress when the run ended:
     # timing, not the answer.)
     check_with_verify_py(spread, files, tmp_path)
