@@ -83,6 +83,14 @@ const DISPLACEMENT: i32 = 4;
 /// (BENCHMARKS, "3D: displaced starts on the meshes").
 const DISPLACED_LANES: usize = 2;
 
+/// States the pilots of voxel meshes keep from one step to the next
+/// ([`greedy::Lookahead::beam`]; 1 elsewhere): the 1,000-voxel pawn into
+/// a 10×10×10 box reaches 27 pieces where the pilot method stayed at 28,
+/// and the 2,000-voxel blob 40 on every seed (BENCHMARKS, "3D: beam
+/// pilots on the meshes"). Such a pilot does `MESH_PILOT_BEAM` times the
+/// work of its width, and so do the rebuilds that follow it.
+const MESH_PILOT_BEAM: usize = 4;
+
 /// Attempts (fresh streams) at one descent step while it ends near misses.
 const DESCENT_ATTEMPTS: usize = 4;
 
@@ -181,6 +189,13 @@ pub fn solve_anytime_with(
     }
     // Large figures (and those beyond the ladder): the level search is
     // slow there, so the constructive step looks ahead (the pilot method).
+    // Large voxel figures that are not a few boxes (meshes): beam pilots,
+    // and displaced starts below.
+    let voxels = figures[0].lattice().lattice().dim() >= 3;
+    let large_voxels = cells >= coarse::MIN_CELLS && voxels;
+    if large_voxels && !run.boxes_hold_the_best() {
+        run.pilot_beam = MESH_PILOT_BEAM;
+    }
     if scaled && !search.stopped() {
         run.pilot();
     }
@@ -191,8 +206,7 @@ pub fn solve_anytime_with(
     }
     // Large voxel figures that are not a few boxes (meshes): displaced
     // starts beside the undisplaced one, other basins for the rebuilds.
-    let voxels = figures[0].lattice().lattice().dim() >= 3;
-    if cells >= coarse::MIN_CELLS && voxels && !run.boxes_hold_the_best() {
+    if large_voxels && !run.boxes_hold_the_best() {
         run.displaced();
     }
     if scaled && !search.stopped() {
@@ -334,6 +348,9 @@ struct Run<'r, 'a> {
     /// The constructive steps' state: the undisplaced one while the
     /// others wait ([`Run::pilots`]).
     lane: Lane,
+    /// States the pilots keep from step to step ([`MESH_PILOT_BEAM`] on
+    /// meshes, else 1).
+    pilot_beam: usize,
     /// The displaced starts' lanes, for [`Run::pilots`] (none but on
     /// large voxel figures).
     displaced: Vec<Lane>,
@@ -476,6 +493,7 @@ impl<'r, 'a> Run<'r, 'a> {
             below: usize::from(!anytime.plateau),
             inc: Incumbent::new(outcome, max_pieces),
             lane: Lane::new(Point::ORIGIN),
+            pilot_beam: 1,
             displaced: Vec::new(),
             ties: Vec::new(),
             rebuild_batch: 0,
@@ -633,7 +651,12 @@ impl<'r, 'a> Run<'r, 'a> {
                     start: self.lane.start,
                 };
                 let found = search.install(|| {
-                    greedy::pilot_until(&search.problem, style, width, PILOT_DEPTH, search.stop)
+                    let look = greedy::Lookahead {
+                        width,
+                        depth: PILOT_DEPTH,
+                        beam: self.pilot_beam,
+                    };
+                    greedy::pilot_until(&search.problem, style, look, search.stop)
                 });
                 let Some((cand, more)) = found else {
                     break 'styles;
@@ -681,7 +704,7 @@ impl<'r, 'a> Run<'r, 'a> {
                 self.pilot();
                 schedule.record(i, self.lane.pilot_best < before);
                 // Rebuilds in proportion to the pilot's work.
-                self.rebuild(width / PILOT_WIDTH);
+                self.rebuild(self.pilot_beam * width / PILOT_WIDTH);
             }
             self.switch_lanes(i);
         }

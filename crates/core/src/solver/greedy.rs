@@ -82,54 +82,91 @@ pub(crate) fn greedy_until(
     Some(state.into_candidate())
 }
 
-/// The pilot method on the greedy: at each of the first `depth` steps, the
-/// best `width` motions of the first other figure (by the connected
-/// choice's score) are each taken and the dissection finished greedily;
-/// the step whose finished dissection has the fewest pieces is kept (the
-/// first on ties). With it, whether some step had more motions than
-/// `width` (a wider pilot would look at more). `None` when `stop` is raised
-/// before it ends.
+/// How far [`pilot_until`] looks ahead.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Lookahead {
+    /// Motions tried from each kept state at a step.
+    pub(crate) width: usize,
+    /// Steps looked ahead (the rest are finished greedily).
+    pub(crate) depth: usize,
+    /// States kept from one step to the next (1: the pilot method).
+    pub(crate) beam: usize,
+}
+
+/// The pilot method on the greedy, as a beam: at each of the first `depth`
+/// steps, from each of the `beam` kept states, the best `width` motions of
+/// the first other figure (by the style's ranking) are each taken and the
+/// dissection finished greedily; the `beam` distinct next states whose
+/// finished dissections have the fewest pieces are kept (on ties, the
+/// earlier kept state's, then the better-ranked motion's). With `beam` 1
+/// this is the pilot method: the step whose finished dissection has the
+/// fewest pieces, the first on ties. Returns the fewest-piece dissection
+/// finished on the way and whether some step had more motions than
+/// `width` (a wider pilot would look at more); `None` when `stop` is
+/// raised before it ends.
 pub(crate) fn pilot_until(
     problem: &Problem,
     style: GreedyStyle,
-    width: usize,
-    depth: usize,
+    look: Lookahead,
     stop: &AtomicBool,
 ) -> Option<(Candidate, bool)> {
-    let mut state = State::new(problem, style);
-    let other = (0..problem.shapes.len()).find(|&f| f != state.pivot)?;
+    let root = State::new(problem, style);
+    let other = (0..problem.shapes.len()).find(|&f| f != root.pivot)?;
     let mut best: Option<Candidate> = None;
     let mut truncated = false;
-    for _ in 0..depth {
-        if state.left == 0 {
+    let mut beam = vec![root];
+    for _ in 0..look.depth {
+        if beam.iter().all(|s| s.left == 0) {
             break;
         }
-        let cells = state.free_pivot_cells();
-        let motions = ranked_motions(
-            problem,
-            state.pivot,
-            &cells,
-            other,
-            &state.labels[other],
-            (style.choice, style.divisor),
-        );
-        truncated |= motions.len() > width.max(1);
-        let mut chosen: Option<(usize, State)> = None;
-        for &m in motions.iter().take(width.max(1)) {
-            let mut next = state.clone();
-            next.step(Some((other, m)));
-            let mut done = next.clone();
-            done.finish(stop)?;
-            let pieces = done.k as usize;
-            if best.as_ref().is_none_or(|b| pieces < b.k) {
-                best = Some(done.into_candidate());
+        // (pieces once finished, index of the state it came from, state).
+        let mut next: Vec<(usize, usize, State)> = Vec::new();
+        for (from, state) in beam.iter().enumerate() {
+            if state.left == 0 {
+                // Finished: its dissection was counted when it was cut.
+                continue;
             }
-            if chosen.as_ref().is_none_or(|(p, _)| pieces < *p) {
-                chosen = Some((pieces, next));
+            let cells = state.free_pivot_cells();
+            let motions = ranked_motions(
+                problem,
+                state.pivot,
+                &cells,
+                other,
+                &state.labels[other],
+                (style.choice, style.divisor),
+            );
+            truncated |= motions.len() > look.width.max(1);
+            for &m in motions.iter().take(look.width.max(1)) {
+                let mut stepped = state.clone();
+                stepped.step(Some((other, m)));
+                let mut done = stepped.clone();
+                done.finish(stop)?;
+                let pieces = done.k as usize;
+                if best.as_ref().is_none_or(|b| pieces < b.k) {
+                    best = Some(done.into_candidate());
+                }
+                next.push((pieces, from, stepped));
             }
         }
-        state = chosen?.1;
+        // Stable: ties keep the kept state's order, then the motions'.
+        next.sort_by_key(|&(pieces, from, _)| (pieces, from));
+        let mut kept: Vec<State> = Vec::with_capacity(look.beam.max(1));
+        for (_, _, state) in next {
+            if kept.len() == look.beam.max(1) {
+                break;
+            }
+            // Two motions that differ by a symmetry of the piece they cut
+            // give the same state.
+            if kept.iter().all(|k| k.labels != state.labels) {
+                kept.push(state);
+            }
+        }
+        if kept.is_empty() {
+            break;
+        }
+        beam = kept;
     }
+    let mut state = beam.swap_remove(0);
     if state.left > 0 {
         state.finish(stop)?;
     }

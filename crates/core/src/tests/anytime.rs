@@ -206,7 +206,7 @@ fn the_connected_choice_keeps_the_largest_component() {
 /// with a hole and a notch, both figures as the pivot.
 #[test]
 fn the_tidy_choice_leaves_no_more_remainder_parts() {
-    use crate::solver::greedy::{common_part_by, components, pilot_until, FREE};
+    use crate::solver::greedy::{common_part_by, components, pilot_until, Lookahead, FREE};
     let cases: &[&[&str]] = &[
         &["AAA|A.A|AAA/A..|...|..A", "AAAAA|AAAAA"],
         &["AAAA|A..A|AAAA/AA.A|AAAA|AAAA", "AAAAAAA|AAAAAAA|AAAAAAA"],
@@ -264,8 +264,17 @@ fn the_tidy_choice_leaves_no_more_remainder_parts() {
                 };
                 let plain = greedy(&problem, style);
                 assert!(verified(LatticeKind::Cubic, true, &figs, &plain));
-                let (pilot, _) =
-                    pilot_until(&problem, style, 4, 4, &AtomicBool::new(false)).unwrap();
+                let (pilot, _) = pilot_until(
+                    &problem,
+                    style,
+                    Lookahead {
+                        width: 4,
+                        depth: 4,
+                        beam: 1,
+                    },
+                    &AtomicBool::new(false),
+                )
+                .unwrap();
                 assert!(verified(LatticeKind::Cubic, true, &figs, &pilot));
                 assert!(pilot.k <= plain.k, "{figures:?} {style:?}");
             }
@@ -274,11 +283,12 @@ fn the_tidy_choice_leaves_no_more_remainder_parts() {
     assert!(tidier > 0, "the tidy choice never cut differently");
 }
 
-/// The pilot method gives a valid dissection with no more pieces than the
-/// greedy of the same style (its first trial finishes that greedy).
+/// The pilot method, and a beam of pilots, gives a valid dissection with no
+/// more pieces than the greedy of the same style (its first trial finishes
+/// that greedy).
 #[test]
 fn the_pilot_is_valid_and_never_worse_than_its_greedy() {
-    use crate::solver::greedy::pilot_until;
+    use crate::solver::greedy::{pilot_until, Lookahead};
     let cases: &[(LatticeKind, &[&str])] = &[
         (
             LatticeKind::Square,
@@ -299,21 +309,53 @@ fn the_pilot_is_valid_and_never_worse_than_its_greedy() {
                 start: Point::ORIGIN,
             };
             let plain = greedy(&problem, style);
-            let (pilot, _) = pilot_until(&problem, style, 3, 4, &AtomicBool::new(false)).unwrap();
-            assert!(
-                verified(*lattice, true, &figs, &pilot),
-                "{figures:?} {style:?}"
-            );
-            assert!(pilot.k <= plain.k, "{figures:?}: {} > {}", pilot.k, plain.k);
+            // The pilot method (beam 1) and beams that keep more states.
+            for beam in [1, 2, 4] {
+                let look = Lookahead {
+                    width: 3,
+                    depth: 4,
+                    beam,
+                };
+                let (pilot, _) =
+                    pilot_until(&problem, style, look, &AtomicBool::new(false)).unwrap();
+                assert!(
+                    verified(*lattice, true, &figs, &pilot),
+                    "{figures:?} {style:?} beam {beam}"
+                );
+                assert!(
+                    pilot.k <= plain.k,
+                    "{figures:?} beam {beam}: {} > {}",
+                    pilot.k,
+                    plain.k
+                );
+            }
             // As wide as the motions a step ranks: nothing was left out,
             // and the pilot says so.
-            let (_, truncated) =
-                pilot_until(&problem, style, 100_000, 4, &AtomicBool::new(false)).unwrap();
+            let (_, truncated) = pilot_until(
+                &problem,
+                style,
+                Lookahead {
+                    width: 100_000,
+                    depth: 4,
+                    beam: 1,
+                },
+                &AtomicBool::new(false),
+            )
+            .unwrap();
             assert!(!truncated, "{figures:?} {style:?}");
             // One motion per step leaves others out: a wider pilot has
             // something to add.
-            let (_, truncated) =
-                pilot_until(&problem, style, 1, 4, &AtomicBool::new(false)).unwrap();
+            let (_, truncated) = pilot_until(
+                &problem,
+                style,
+                Lookahead {
+                    width: 1,
+                    depth: 4,
+                    beam: 1,
+                },
+                &AtomicBool::new(false),
+            )
+            .unwrap();
             assert!(truncated, "{figures:?} {style:?}");
         }
     }
@@ -324,7 +366,17 @@ fn the_pilot_is_valid_and_never_worse_than_its_greedy() {
         choice: Choice::Connected,
         start: Point::ORIGIN,
     };
-    assert!(pilot_until(&problem, style, 2, 2, &AtomicBool::new(true)).is_none());
+    assert!(pilot_until(
+        &problem,
+        style,
+        Lookahead {
+            width: 2,
+            depth: 2,
+            beam: 1
+        },
+        &AtomicBool::new(true)
+    )
+    .is_none());
 }
 
 /// Checks what the repairer is handed and returns a fixed answer.
