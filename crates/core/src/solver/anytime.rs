@@ -187,15 +187,16 @@ pub fn solve_anytime_with(
     if !search.stopped() {
         run.boxes();
     }
-    // Large figures (and those beyond the ladder): the level search is
-    // slow there, so the constructive step looks ahead (the pilot method).
     // Large voxel figures that are not a few boxes (meshes): beam pilots,
-    // and displaced starts below.
+    // and displaced starts below (asked again there: a pilot may beat the
+    // boxes).
     let voxels = figures[0].lattice().lattice().dim() >= 3;
     let large_voxels = cells >= coarse::MIN_CELLS && voxels;
     if large_voxels && !run.boxes_hold_the_best() {
         run.pilot_beam = MESH_PILOT_BEAM;
     }
+    // Large figures (and those beyond the ladder): the level search is
+    // slow there, so the constructive step looks ahead (the pilot method).
     if scaled && !search.stopped() {
         run.pilot();
     }

@@ -114,6 +114,7 @@ pub(crate) fn pilot_until(
     let other = (0..problem.shapes.len()).find(|&f| f != root.pivot)?;
     let mut best: Option<Candidate> = None;
     let mut truncated = false;
+    let (width, beam_width) = (look.width.max(1), look.beam.max(1));
     let mut beam = vec![root];
     for _ in 0..look.depth {
         if beam.iter().all(|s| s.left == 0) {
@@ -135,8 +136,8 @@ pub(crate) fn pilot_until(
                 &state.labels[other],
                 (style.choice, style.divisor),
             );
-            truncated |= motions.len() > look.width.max(1);
-            for &m in motions.iter().take(look.width.max(1)) {
+            truncated |= motions.len() > width;
+            for &m in motions.iter().take(width) {
                 let mut stepped = state.clone();
                 stepped.step(Some((other, m)));
                 let mut done = stepped.clone();
@@ -150,9 +151,9 @@ pub(crate) fn pilot_until(
         }
         // Stable: ties keep the kept state's order, then the motions'.
         next.sort_by_key(|&(pieces, from, _)| (pieces, from));
-        let mut kept: Vec<State> = Vec::with_capacity(look.beam.max(1));
+        let mut kept: Vec<State> = Vec::with_capacity(beam_width);
         for (_, _, state) in next {
-            if kept.len() == look.beam.max(1) {
+            if kept.len() == beam_width {
                 break;
             }
             // Two motions that differ by a symmetry of the piece they cut
