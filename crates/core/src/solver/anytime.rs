@@ -37,6 +37,13 @@ pub(crate) const PILOT_EAGER_WIDTH: usize = 32;
 /// largest pieces).
 const PILOT_DEPTH: usize = 8;
 
+/// Steps the beam pilots of voxel meshes look ahead at: their answers
+/// have 25 pieces or more, and past the eighth step the plain greedy cut
+/// a tail of small pieces that a look ahead cuts in fewer (the pawn: 27
+/// pieces at depth 8, 26 at 16 and at 32, on seeds 1-3; BENCHMARKS, "3D:
+/// deeper pilots on the meshes").
+const MESH_PILOT_DEPTH: usize = 16;
+
 /// Tail rebuilds per batch ([`Run::rebuild`]).
 const REBUILDS: usize = 64;
 
@@ -187,13 +194,14 @@ pub fn solve_anytime_with(
     if !search.stopped() {
         run.boxes();
     }
-    // Large voxel figures that are not a few boxes (meshes): beam pilots,
-    // and displaced starts below (asked again there: a pilot may beat the
+    // Large voxel figures that are not a few boxes (meshes): deeper beam
+    // pilots, and displaced starts below (asked again there: a pilot may beat the
     // boxes).
     let voxels = figures[0].lattice().lattice().dim() >= 3;
     let large_voxels = cells >= coarse::MIN_CELLS && voxels;
     if large_voxels && !run.boxes_hold_the_best() {
         run.pilot_beam = MESH_PILOT_BEAM;
+        run.pilot_depth = MESH_PILOT_DEPTH;
     }
     // Large figures (and those beyond the ladder): the level search is
     // slow there, so the constructive step looks ahead (the pilot method).
@@ -352,6 +360,9 @@ struct Run<'r, 'a> {
     /// States the pilots keep from step to step ([`MESH_PILOT_BEAM`] on
     /// meshes, else 1).
     pilot_beam: usize,
+    /// Steps the pilots look ahead at ([`MESH_PILOT_DEPTH`] on meshes,
+    /// else [`PILOT_DEPTH`]).
+    pilot_depth: usize,
     /// The displaced starts' lanes, for [`Run::pilots`] (none but on
     /// large voxel figures).
     displaced: Vec<Lane>,
@@ -495,6 +506,7 @@ impl<'r, 'a> Run<'r, 'a> {
             inc: Incumbent::new(outcome, max_pieces),
             lane: Lane::new(Point::ORIGIN),
             pilot_beam: 1,
+            pilot_depth: PILOT_DEPTH,
             displaced: Vec::new(),
             ties: Vec::new(),
             rebuild_batch: 0,
@@ -654,7 +666,7 @@ impl<'r, 'a> Run<'r, 'a> {
                 let found = search.install(|| {
                     let look = greedy::Lookahead {
                         width,
-                        depth: PILOT_DEPTH,
+                        depth: self.pilot_depth,
                         beam: self.pilot_beam,
                     };
                     greedy::pilot_until(&search.problem, style, look, search.stop)

@@ -309,22 +309,24 @@ fn the_pilot_is_valid_and_never_worse_than_its_greedy() {
                 start: Point::ORIGIN,
             };
             let plain = greedy(&problem, style);
-            // The pilot method (beam 1) and beams that keep more states.
-            for beam in [1, 2, 4] {
+            // The pilot method (beam 1) and beams that keep more states,
+            // looking ahead at a few steps or past the last one (the
+            // meshes' depth).
+            for (beam, depth) in [(1, 4), (2, 4), (4, 4), (4, 16)] {
                 let look = Lookahead {
                     width: 3,
-                    depth: 4,
+                    depth,
                     beam,
                 };
                 let (pilot, _) =
                     pilot_until(&problem, style, look, &AtomicBool::new(false)).unwrap();
                 assert!(
                     verified(*lattice, true, &figs, &pilot),
-                    "{figures:?} {style:?} beam {beam}"
+                    "{figures:?} {style:?} beam {beam} depth {depth}"
                 );
                 assert!(
                     pilot.k <= plain.k,
-                    "{figures:?} beam {beam}: {} > {}",
+                    "{figures:?} beam {beam} depth {depth}: {} > {}",
                     pilot.k,
                     plain.k
                 );
