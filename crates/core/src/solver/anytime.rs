@@ -38,8 +38,8 @@ pub(crate) const PILOT_EAGER_WIDTH: usize = 32;
 const PILOT_DEPTH: usize = 8;
 
 /// Steps the beam pilots of voxel meshes look ahead at: their answers
-/// have 25 pieces or more, and past the eighth step the plain greedy cut
-/// a tail of small pieces that a look ahead cuts in fewer (the pawn: 27
+/// have 17 to 40 pieces, and past the eighth step the plain greedy cut a
+/// tail of small pieces that a look ahead cuts in fewer (the pawn: 27
 /// pieces at depth 8, 26 at 16 and at 32, on seeds 1-3; BENCHMARKS, "3D:
 /// deeper pilots on the meshes").
 const MESH_PILOT_DEPTH: usize = 16;
@@ -195,8 +195,8 @@ pub fn solve_anytime_with(
         run.boxes();
     }
     // Large voxel figures that are not a few boxes (meshes): deeper beam
-    // pilots, and displaced starts below (asked again there: a pilot may beat the
-    // boxes).
+    // pilots, and displaced starts below (asked again there: a pilot may
+    // beat the boxes).
     let voxels = figures[0].lattice().lattice().dim() >= 3;
     let large_voxels = cells >= coarse::MIN_CELLS && voxels;
     if large_voxels && !run.boxes_hold_the_best() {
